@@ -1,0 +1,102 @@
+#pragma once
+// The lattice-Boltzmann fluid: D2Q9 populations in structure-of-arrays storage
+// on a grid padded by one node on each side, the node kinds acting on it, and
+// the fields users read back, in physical units.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "sandflow/lb/lattice_def.hpp"
+#include "sandflow/lb/node.hpp"
+
+namespace sf::lb {
+
+// A fixed solid rectangle: nodes whose centres lie inside are solid; those that
+// border fluid are bounce-back (or slip) nodes, the rest do no work.
+struct RectObstacle {
+  int id = 0;
+  Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
+  bool slip = false;
+};
+
+struct ObstacleInfo {
+  RectObstacle shape;
+  std::size_t nodes = 0;       // solid nodes it covers
+  Vec2 force = Vec2::Zero();   // force per unit thickness the fluid exerts on it
+  double torque = 0.0;         // about the rectangle's centre
+};
+
+class Lattice {
+ public:
+  explicit Lattice(const ResolvedLattice& params);
+  ~Lattice();
+  Lattice(const Lattice&) = delete;
+  Lattice& operator=(const Lattice&) = delete;
+
+  const ResolvedLattice& params() const { return p_; }
+  int nx() const { return p_.nx; }
+  int ny() const { return p_.ny; }
+  std::size_t nodes() const { return std::size_t(p_.nx) * p_.ny; }
+
+  // Changes what may change on a live lattice (tau, viscosity, timestep, forcing,
+  // walls, collision); the grid itself may not. Validated before anything changes.
+  void reconfigure(const ResolvedLattice& params);
+
+  // One step. On NaN or a Mach number above `machLimit` it throws sf::Error
+  // (code "UNSTABLE ...") naming the node, and keeps the state before the step.
+  StepStats step(double machLimit = 0.3);
+  void setThreads(int threads);
+  int threads() const { return threads_; }
+
+  // Obstacles.
+  int addObstacle(const RectObstacle& rect);  // rect.id < 0: next free id
+  void deleteObstacle(int id);
+  std::vector<int> obstacleIds() const;
+  ObstacleInfo obstacleInfo(int id) const;  // throws if unknown
+
+  // Fields of interior node (i, j), 0 <= i < nx, 0 <= j < ny, physical units.
+  NodeKind kind(int i, int j) const;
+  double density(int i, int j) const;
+  Vec2 velocity(int i, int j) const;
+  double pressure(int i, int j) const;
+  Vec2 position(int i, int j) const;
+  // Nearest node to a point, or nullopt outside the lattice.
+  std::optional<std::pair<int, int>> nodeAt(const Vec2& x) const;
+
+  double mass() const;     // per unit thickness
+  Vec2 momentum() const;   // per unit thickness
+  double maxMach() const;  // |u|max / c over fluid nodes, now
+  double lastStepMach() const { return lastMach_; }
+
+  // Sets every fluid node to the equilibrium of the given density and velocity.
+  void initialize(const std::function<void(const Vec2& x, double& rho, Vec2& u)>& field);
+
+  // Raw populations (post-collision, lattice units), for tests and checkpoints.
+  double population(int direction, int i, int j) const;
+  const double* populationData() const { return f_; }
+  std::size_t populationCount() const { return 9 * stride_; }
+  std::size_t memoryBytes() const;
+  const std::vector<std::unique_ptr<Node>>& kinds() const { return kinds_; }
+
+ private:
+  std::int64_t index(int i, int j) const { return std::int64_t(j + 1) * rowStride_ + (i + 1); }
+  void rebuildTopology();
+  StepContext context() const;
+  bool holdsFluid(std::int64_t node) const;
+  Vec2 latticeVelocity(std::int64_t node) const;  // pre-collision velocity, lattice units
+  [[noreturn]] void reportInstability(const StepStats& stats, double machLimit) const;
+
+  ResolvedLattice p_;
+  std::ptrdiff_t rowStride_ = 0, stride_ = 0;
+  double* f_ = nullptr;  // current populations, 9 * stride_
+  double* g_ = nullptr;  // next populations
+  std::vector<NodeKind> kind_;  // per padded node
+  std::vector<std::unique_ptr<Node>> kinds_;
+  std::vector<RectObstacle> obstacles_;
+  int threads_ = 1;
+  double lastMach_ = 0.0;
+};
+
+}  // namespace sf::lb

@@ -1,0 +1,127 @@
+#pragma once
+// Node kinds (design.md "polymorphism per node kind, not per node"). A `Node`
+// subclass owns a batch -- a list of spans, nodes or links -- and acts on the
+// whole batch per virtual call, so the inner loops are plain code.
+//
+// A step has two phases over population arrays indexed [direction * stride + node]
+// on the padded (nx+2) x (ny+2) grid, holding post-collision populations:
+//   1. streamCollide: kinds whose nodes hold fluid pull f_i(x - e_i) from `src`,
+//      collide, and write `dst` (the bulk fluid, Zou-He edges);
+//   2. fill (after the swap): kinds that bound the fluid write the slots their
+//      fluid neighbours will pull from next step (bounce-back, slip, periodic).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "sandflow/geometry/vec2.hpp"
+#include "sandflow/lb/collision.hpp"
+
+namespace sf::lb {
+
+// What a node is, as stored per node and written to output (values are stable).
+enum class NodeKind : std::uint8_t {
+  fluid = 0,     // bulk fluid
+  noslip = 1,    // bounce-back wall node (borders fluid)
+  slip = 2,      // specular (free-slip) wall node
+  solid = 3,     // interior of a fixed solid: no work
+  velocity = 4,  // Zou-He velocity edge node (holds fluid)
+  pressure = 5,  // Zou-He pressure edge node (holds fluid)
+  open = 6,      // outside a velocity/pressure side: never read
+};
+
+struct StepContext {
+  const double* src = nullptr;
+  double* dst = nullptr;
+  std::ptrdiff_t stride = 0;  // nodes in the padded grid
+  std::ptrdiff_t rowStride = 0;
+  Collision collision = Collision::bgk;
+  ForceScheme forceScheme = ForceScheme::nodal;
+  CollisionParams params;
+  int threads = 1;
+};
+
+// Reductions of one phase-1 pass, combined in a fixed order.
+struct StepStats {
+  double mass = 0.0;   // sum of densities (NaN if any population is NaN)
+  double maxU2 = 0.0;  // largest |u|^2, lattice units
+  void merge(const StepStats& o) {
+    mass += o.mass;
+    maxU2 = o.maxU2 > maxU2 ? o.maxU2 : maxU2;
+  }
+};
+
+class Node {
+ public:
+  virtual ~Node() = default;
+  virtual const char* name() const = 0;
+  virtual std::size_t count() const = 0;  // nodes (or links) in the batch
+  virtual StepStats streamCollide(const StepContext&) const { return {}; }
+  virtual void fill(double* /*f*/) const {}
+};
+
+// Bulk fluid: contiguous spans of a row, fused pull-stream and collide, no branches.
+class FluidNode final : public Node {
+ public:
+  struct Span {
+    std::ptrdiff_t first;
+    std::int32_t length;
+  };
+  std::vector<Span> spans;
+  const char* name() const override { return "fluid"; }
+  std::size_t count() const override;
+  StepStats streamCollide(const StepContext& ctx) const override;
+};
+
+// Slot copies f[dst] = f[src] + add, evaluated after the swap. One form serves
+// periodic images, (moving) bounce-back and specular reflection.
+struct Link {
+  std::int64_t dst;  // direction * stride + node, a slot a fluid node pulls from
+  std::int64_t src;  // the post-collision slot it takes its value from
+  double add;        // moving-wall momentum term, lattice units
+  std::int32_t owner;  // obstacle id, or -1 - side for the domain's sides
+  std::int32_t node;   // the fluid node that pulls (for forces)
+};
+
+class LinkNode : public Node {
+ public:
+  std::vector<Link> links;
+  std::size_t count() const override { return links.size(); }
+  void fill(double* f) const override;
+};
+
+class PeriodicNode final : public LinkNode {
+ public:
+  const char* name() const override { return "periodic"; }
+};
+class BounceBackNode final : public LinkNode {
+ public:
+  const char* name() const override { return "noslip"; }
+};
+class SlipNode final : public LinkNode {
+ public:
+  const char* name() const override { return "slip"; }
+};
+
+// Interior of fixed solids: removed from the work; kept to be counted.
+class FixedSolidNode final : public Node {
+ public:
+  std::size_t nodes = 0;
+  const char* name() const override { return "solid"; }
+  std::size_t count() const override { return nodes; }
+};
+
+// Zou & He (1997) velocity or pressure boundary on one side: the edge nodes pull
+// what they can, rebuild the populations that would come from outside, collide.
+class ZouHeNode final : public Node {
+ public:
+  int side = 0;  // sf::lb::Side
+  bool pressure = false;
+  double density = 1.0;               // pressure sides
+  Vec2 velocity = Vec2::Zero();       // velocity sides, lattice units
+  std::vector<std::int64_t> nodes;
+  const char* name() const override { return pressure ? "pressure" : "velocity"; }
+  std::size_t count() const override { return nodes.size(); }
+  StepStats streamCollide(const StepContext& ctx) const override;
+};
+
+}  // namespace sf::lb

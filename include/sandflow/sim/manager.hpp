@@ -1,0 +1,63 @@
+#pragma once
+// The Manager owns what a scene holds -- for now an optional lattice -- and the
+// clock, and runs the step with only the passes the scene needs.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sandflow/lb/lattice.hpp"
+
+namespace sf::sim {
+
+class Manager {
+ public:
+  Manager();
+
+  // Lattice. `create` keeps the scene unchanged when the definition is refused.
+  bool hasLattice() const { return lattice_ != nullptr; }
+  lb::Lattice& lattice();
+  const lb::Lattice& lattice() const;
+  void createLattice(lb::LatticeDef def);
+  void reconfigureLattice(const lb::LatticeDef& def);
+  void deleteLattice();
+
+  // Timestep: derived from the lattice, or fixed by the user (then tau follows).
+  double timestep() const;
+  bool timestepFixed() const { return fixedTimestep_.has_value(); }
+  void setTimestep(double dt);
+  int threads() const { return threads_; }
+  void setThreads(int threads);
+
+  double time() const { return time_; }
+  long long stepCount() const { return steps_; }
+  // Advances one step. On instability throws sf::Error naming step and cause; the
+  // state before the step is kept.
+  void step();
+  // Clears the scene (lattice, time, settings) but keeps the thread count.
+  void reset();
+
+  double machWarnLimit() const { return 0.1; }
+  double machStopLimit() const { return 0.3; }
+  // Warnings raised since the last call (each kind once per lattice).
+  std::vector<std::string> takeWarnings();
+  const std::vector<std::string>& warnings() const { return warningLog_; }
+
+  // Million lattice-node updates per second of the last `run`.
+  double mlups() const { return mlups_; }
+  void setMlups(double m) { mlups_ = m; }
+
+ private:
+  void warn(const std::string& message);
+
+  std::unique_ptr<lb::Lattice> lattice_;
+  std::optional<double> fixedTimestep_;
+  int threads_ = 1;
+  double time_ = 0.0;
+  long long steps_ = 0;
+  double mlups_ = 0.0;
+  bool machWarned_ = false;
+  std::vector<std::string> pendingWarnings_, warningLog_;
+};
+
+}  // namespace sf::sim

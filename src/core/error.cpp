@@ -1,0 +1,13 @@
+#include "sandflow/core/error.hpp"
+
+#include <charconv>
+
+namespace sf {
+
+std::string formatNumber(double value) {
+  char buffer[32];
+  auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+}  // namespace sf

@@ -1,0 +1,321 @@
+#include "sandflow/lb/lattice.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <new>
+
+#include "sandflow/core/error.hpp"
+
+namespace sf::lb {
+namespace {
+
+double* allocatePopulations(std::size_t count) {
+  const std::size_t bytes = (count * sizeof(double) + 63) / 64 * 64;
+  void* p = std::aligned_alloc(64, bytes);
+  if (!p)
+    throw Error("RESOURCE MEMORY", "cannot allocate " + formatNumber(bytes / 1e9) +
+                                       " GB for the lattice populations");
+  return static_cast<double*>(p);
+}
+
+}  // namespace
+
+Lattice::Lattice(const ResolvedLattice& params) : p_(params) {
+  rowStride_ = p_.nx + 2;
+  stride_ = rowStride_ * (p_.ny + 2);
+  const std::size_t count = 9 * static_cast<std::size_t>(stride_);
+  f_ = allocatePopulations(count);
+  try {
+    g_ = allocatePopulations(count);
+    kind_.reserve(stride_);
+  } catch (...) {
+    std::free(f_);
+    throw;
+  } 
+  // First touch in parallel, the way the step will use the memory.
+  const double rho0 = p_.def.density;
+  const std::ptrdiff_t n = stride_;
+  for (int d = 0; d < 9; ++d) {
+    double* a = f_ + d * stride_;
+    double* b = g_ + d * stride_;
+    const double value = d2q9::w[d] * rho0;
+#pragma omp parallel for schedule(static) num_threads(threads_)
+    for (std::ptrdiff_t k = 0; k < n; ++k) a[k] = b[k] = value;
+  }
+  rebuildTopology();
+}
+
+Lattice::~Lattice() {
+  std::free(f_);
+  std::free(g_);
+}
+
+void Lattice::reconfigure(const ResolvedLattice& params) {
+  if (params.nx != p_.nx || params.ny != p_.ny || params.h != p_.h ||
+      params.def.origin != p_.def.origin)
+    throw Error("VALUE GEOMETRY",
+                "the lattice's origin, size and spacing are fixed: delete it and create a new one");
+  if (params.def.density != p_.def.density)
+    throw Error("VALUE DENSITY", "-density is the initial state: it cannot change on a live lattice");
+  const bool wallsChanged = [&] {
+    for (int s = 0; s < 4; ++s) {
+      const SideDef &a = params.def.sides[s], &b = p_.def.sides[s];
+      if (a.kind != b.kind || a.velocity != b.velocity || a.pressure != b.pressure) return true;
+    }
+    return params.dt != p_.dt;  // wall terms are in lattice units
+  }();
+  p_ = params;
+  if (wallsChanged) rebuildTopology();
+}
+
+void Lattice::setThreads(int threads) { threads_ = std::max(1, threads); }
+
+StepContext Lattice::context() const {
+  StepContext c;
+  c.src = f_;
+  c.dst = g_;
+  c.stride = stride_;
+  c.rowStride = rowStride_;
+  c.collision = p_.def.collision;
+  c.forceScheme = p_.def.forceScheme;
+  c.params.omegaPlus = 1.0 / p_.tau;
+  // TRT: Lambda = (tau+ - 1/2)(tau- - 1/2) fixes the antisymmetric rate.
+  c.params.omegaMinus = 1.0 / (p_.def.magic / (p_.tau - 0.5) + 0.5);
+  c.params.fx = p_.forceToLattice(p_.def.forcing.x());
+  c.params.fy = p_.forceToLattice(p_.def.forcing.y());
+  c.threads = threads_;
+  return c;
+}
+
+StepStats Lattice::step(double machLimit) {
+  const StepContext ctx = context();
+  StepStats stats;
+  for (const auto& k : kinds_) stats.merge(k->streamCollide(ctx));
+  if (!std::isfinite(stats.mass) || !(stats.maxU2 <= machLimit * machLimit))
+    reportInstability(stats, machLimit);
+  std::swap(f_, g_);
+  for (const auto& k : kinds_) k->fill(f_);
+  lastMach_ = std::sqrt(stats.maxU2);
+  return stats;
+}
+
+void Lattice::reportInstability(const StepStats& stats, double machLimit) const {
+  // Find the culprit in the rejected new state (g_); the current state stays.
+  std::int64_t worst = -1;
+  double worstU2 = -1.0;
+  bool nan = !std::isfinite(stats.mass);
+  for (int j = 0; j < p_.ny && !(nan && worst >= 0); ++j)
+    for (int i = 0; i < p_.nx; ++i) {
+      const std::int64_t x = index(i, j);
+      if (!holdsFluid(x)) continue;
+      double rho = 0, jx = 0, jy = 0;
+      for (int d = 0; d < 9; ++d) {
+        const double v = g_[d * stride_ + x];
+        rho += v;
+        jx += d2q9::ex[d] * v;
+        jy += d2q9::ey[d] * v;
+      }
+      const double u2 = (jx * jx + jy * jy) / (rho * rho);
+      if (nan && !std::isfinite(rho + jx + jy)) {
+        worst = x;
+        break;
+      }
+      if (!nan && u2 > worstU2) worstU2 = u2, worst = x;
+    }
+  const int i = int(worst % rowStride_) - 1, j = int(worst / rowStride_) - 1;
+  const Vec2 at = worst >= 0 ? position(i, j) : Vec2::Zero();
+  const std::string where = "node (" + std::to_string(i) + ", " + std::to_string(j) +
+                            ") at {" + formatNumber(at.x()) + " " + formatNumber(at.y()) + "}";
+  if (nan) throw Error("UNSTABLE NAN", "the fluid became NaN at " + where);
+  throw Error("UNSTABLE MACH", "Mach number " + formatNumber(std::sqrt(stats.maxU2)) +
+                                   " exceeds " + formatNumber(machLimit) + " at " + where +
+                                   ": reduce the timestep or the forcing");
+}
+
+// Pre-collision velocity (lattice units) from the stored post-collision state:
+// collision adds F to the first moment, and Guo's velocity carries F/2 back.
+Vec2 Lattice::latticeVelocity(std::int64_t x) const {
+  double rho = 0, jx = 0, jy = 0;
+  for (int d = 0; d < 9; ++d) {
+    const double v = f_[d * stride_ + x];
+    rho += v;
+    jx += d2q9::ex[d] * v;
+    jy += d2q9::ey[d] * v;
+  }
+  const double back = p_.def.forceScheme == ForceScheme::guo ? 0.5 : 1.0;
+  const Vec2 F(p_.forceToLattice(p_.def.forcing.x()), p_.forceToLattice(p_.def.forcing.y()));
+  return (Vec2(jx, jy) - back * F) / rho;
+}
+
+bool Lattice::holdsFluid(std::int64_t x) const {
+  const NodeKind k = kind_[x];
+  return k == NodeKind::fluid || k == NodeKind::velocity || k == NodeKind::pressure;
+}
+
+NodeKind Lattice::kind(int i, int j) const { return kind_[index(i, j)]; }
+
+double Lattice::density(int i, int j) const {
+  const std::int64_t x = index(i, j);
+  if (!holdsFluid(x)) return p_.def.density;
+  double rho = 0;
+  for (int d = 0; d < 9; ++d) rho += f_[d * stride_ + x];
+  return rho;
+}
+
+Vec2 Lattice::velocity(int i, int j) const {
+  const std::int64_t x = index(i, j);
+  if (!holdsFluid(x)) return Vec2::Zero();
+  return latticeVelocity(x) * p_.latticeSpeed();
+}
+
+double Lattice::pressure(int i, int j) const {
+  const double cs = p_.soundSpeed();
+  return cs * cs * density(i, j);
+}
+
+Vec2 Lattice::position(int i, int j) const {
+  return p_.def.origin + Vec2((i + 0.5) * p_.h, (j + 0.5) * p_.h);
+}
+
+std::optional<std::pair<int, int>> Lattice::nodeAt(const Vec2& x) const {
+  const Vec2 r = (x - p_.def.origin) / p_.h;
+  if (!(r.x() >= 0 && r.y() >= 0 && r.x() <= p_.nx && r.y() <= p_.ny)) return std::nullopt;
+  return std::pair{std::min(int(r.x()), p_.nx - 1), std::min(int(r.y()), p_.ny - 1)};
+}
+
+double Lattice::mass() const {
+  double m = 0;
+  for (int j = 0; j < p_.ny; ++j)
+    for (int i = 0; i < p_.nx; ++i)
+      if (holdsFluid(index(i, j)))
+        for (int d = 0; d < 9; ++d) m += f_[d * stride_ + index(i, j)];
+  return m * p_.h * p_.h;
+}
+
+Vec2 Lattice::momentum() const {
+  Vec2 m = Vec2::Zero();
+  for (int j = 0; j < p_.ny; ++j)
+    for (int i = 0; i < p_.nx; ++i) {
+      const std::int64_t x = index(i, j);
+      if (!holdsFluid(x)) continue;
+      double rho = 0;
+      for (int d = 0; d < 9; ++d) rho += f_[d * stride_ + x];
+      m += rho * latticeVelocity(x);
+    }
+  return m * p_.h * p_.h * p_.latticeSpeed();
+}
+
+double Lattice::maxMach() const {
+  double u2 = 0;
+  for (int j = 0; j < p_.ny; ++j)
+    for (int i = 0; i < p_.nx; ++i)
+      if (holdsFluid(index(i, j))) u2 = std::max(u2, latticeVelocity(index(i, j)).squaredNorm());
+  return std::sqrt(u2);
+}
+
+void Lattice::initialize(const std::function<void(const Vec2&, double&, Vec2&)>& field) {
+  for (int j = 0; j < p_.ny; ++j)
+    for (int i = 0; i < p_.nx; ++i) {
+      const std::int64_t x = index(i, j);
+      if (!holdsFluid(x)) continue;
+      double rho = p_.def.density;
+      Vec2 u = Vec2::Zero();
+      field(position(i, j), rho, u);
+      if (!(rho > 0) || !std::isfinite(rho) || !u.allFinite())
+        throw Error("VALUE FIELD", "initial field is not a positive finite density and "
+                                   "finite velocity at {" + formatNumber(position(i, j).x()) +
+                                       " " + formatNumber(position(i, j).y()) + "}");
+      const Vec2 ul = u * (p_.dt / p_.h);
+      for (int d = 0; d < 9; ++d) f_[d * stride_ + x] = equilibrium(d, rho, ul.x(), ul.y());
+    }
+  for (const auto& k : kinds_) k->fill(f_);
+}
+
+double Lattice::population(int direction, int i, int j) const {
+  return f_[direction * stride_ + index(i, j)];
+}
+
+std::size_t Lattice::memoryBytes() const {
+  return 2 * 9 * stride_ * sizeof(double) + kind_.capacity() * sizeof(NodeKind);
+}
+
+// ---- obstacles -------------------------------------------------------------
+
+int Lattice::addObstacle(const RectObstacle& rect) {
+  RectObstacle r = rect;
+  if (!r.lo.allFinite() || !r.hi.allFinite() || !(r.lo.x() < r.hi.x()) || !(r.lo.y() < r.hi.y()))
+    throw Error("VALUE RECT", "rect must be {x0 y0 x1 y1} with x0 < x1 and y0 < y1");
+  if (r.id < 0) {
+    r.id = 0;
+    for (const auto& o : obstacles_) r.id = std::max(r.id, o.id + 1);
+  } else if (std::any_of(obstacles_.begin(), obstacles_.end(),
+                         [&](const RectObstacle& o) { return o.id == r.id; })) {
+    throw Error("VALUE ID", "obstacle id " + std::to_string(r.id) + " is in use");
+  }
+  bool covers = false;
+  for (int j = 0; j < p_.ny && !covers; ++j)
+    for (int i = 0; i < p_.nx && !covers; ++i) {
+      const Vec2 x = position(i, j);
+      covers = x.x() >= r.lo.x() && x.x() <= r.hi.x() && x.y() >= r.lo.y() && x.y() <= r.hi.y();
+    }
+  if (!covers)
+    throw Error("VALUE RECT", "rect {" + formatNumber(r.lo.x()) + " " + formatNumber(r.lo.y()) +
+                                  " " + formatNumber(r.hi.x()) + " " + formatNumber(r.hi.y()) +
+                                  "} covers no lattice node (spacing " + formatNumber(p_.h) + ")");
+  obstacles_.push_back(r);
+  rebuildTopology();
+  return r.id;
+}
+
+void Lattice::deleteObstacle(int id) {
+  auto it = std::find_if(obstacles_.begin(), obstacles_.end(),
+                         [&](const RectObstacle& o) { return o.id == id; });
+  if (it == obstacles_.end())
+    throw Error("LOOKUP OBSTACLE", "no obstacle with id " + std::to_string(id));
+  obstacles_.erase(it);
+  rebuildTopology();
+}
+
+std::vector<int> Lattice::obstacleIds() const {
+  std::vector<int> ids;
+  for (const auto& o : obstacles_) ids.push_back(o.id);
+  return ids;
+}
+
+ObstacleInfo Lattice::obstacleInfo(int id) const {
+  auto it = std::find_if(obstacles_.begin(), obstacles_.end(),
+                         [&](const RectObstacle& o) { return o.id == id; });
+  if (it == obstacles_.end())
+    throw Error("LOOKUP OBSTACLE", "no obstacle with id " + std::to_string(id));
+  ObstacleInfo info;
+  info.shape = *it;
+  const Vec2 centre = 0.5 * (it->lo + it->hi);
+  for (int j = 0; j < p_.ny; ++j)
+    for (int i = 0; i < p_.nx; ++i) {
+      const Vec2 x = position(i, j);
+      info.nodes += x.x() >= it->lo.x() && x.x() <= it->hi.x() && x.y() >= it->lo.y() &&
+                    x.y() <= it->hi.y();
+    }
+  // Momentum exchange over the wall links: what leaves the fluid node towards
+  // the wall minus what comes back, per step.
+  const double scale = p_.h * p_.h * p_.h / (p_.dt * p_.dt);
+  for (const auto& k : kinds_) {
+    const auto* links = dynamic_cast<const LinkNode*>(k.get());
+    if (!links || dynamic_cast<const PeriodicNode*>(k.get())) continue;
+    for (const Link& l : links->links) {
+      if (l.owner != id) continue;
+      const int in = int(l.dst / stride_), out = int(l.src / stride_);
+      const Vec2 dp = f_[l.src] * Vec2(d2q9::ex[out], d2q9::ey[out]) -
+                      f_[l.dst] * Vec2(d2q9::ex[in], d2q9::ey[in]);
+      const Vec2 F = dp * scale;
+      const int i = l.node % rowStride_ - 1, j = l.node / rowStride_ - 1;
+      const Vec2 arm = position(i, j) - 0.5 * p_.h * Vec2(d2q9::ex[in], d2q9::ey[in]) - centre;
+      info.force += F;
+      info.torque += arm.x() * F.y() - arm.y() * F.x();
+    }
+  }
+  return info;
+}
+
+}  // namespace sf::lb

@@ -1,0 +1,163 @@
+#include "sandflow/tcl/args.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace sf::tcl {
+namespace {
+
+void noteOption(Tcl_Interp* interp, const char* what) {
+  const std::string info = std::string("\n    (in ") + what + (what[0] == '-' ? " option)" : ")");
+  Tcl_AddErrorInfo(interp, info.c_str());
+}
+
+}  // namespace
+
+int fail(Tcl_Interp* interp, const std::string& code, const std::string& message) {
+  Tcl_SetObjResult(interp, newString(message));
+  Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
+  Tcl_ListObjAppendElement(nullptr, list, Tcl_NewStringObj("SANDFLOW", -1));
+  std::istringstream words(code);
+  for (std::string w; words >> w;)
+    Tcl_ListObjAppendElement(nullptr, list, Tcl_NewStringObj(w.c_str(), -1));
+  Tcl_SetObjErrorCode(interp, list);
+  return TCL_ERROR;
+}
+
+int fail(Tcl_Interp* interp, const Error& error) { return fail(interp, error.code(), error.what()); }
+
+bool getDouble(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, double& out) {
+  if (Tcl_GetDoubleFromObj(interp, obj, &out) != TCL_OK) {
+    noteOption(interp, what);
+    return false;
+  }
+  if (!std::isfinite(out)) {
+    fail(interp, "VALUE NUMBER",
+         std::string("expected finite number but got \"") + Tcl_GetString(obj) + "\"");
+    noteOption(interp, what);
+    return false;
+  }
+  return true;
+}
+
+bool getInt(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, int& out) {
+  if (Tcl_GetIntFromObj(interp, obj, &out) == TCL_OK) return true;
+  noteOption(interp, what);
+  return false;
+}
+
+bool getBool(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, bool& out) {
+  int b = 0;
+  if (Tcl_GetBooleanFromObj(interp, obj, &b) != TCL_OK) {
+    noteOption(interp, what);
+    return false;
+  }
+  out = b != 0;
+  return true;
+}
+
+bool getDoubles(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, int count,
+                std::vector<double>& out) {
+  int n = 0;
+  Tcl_Obj** items = nullptr;
+  if (Tcl_ListObjGetElements(interp, obj, &n, &items) != TCL_OK) {
+    noteOption(interp, what);
+    return false;
+  }
+  if (n != count) {
+    fail(interp, "VALUE LIST",
+         std::string(what) + " must be a list of " + std::to_string(count) + " numbers, got \"" +
+             Tcl_GetString(obj) + "\"");
+    noteOption(interp, what);
+    return false;
+  }
+  out.resize(count);
+  for (int i = 0; i < count; ++i)
+    if (!getDouble(interp, items[i], what, out[i])) return false;
+  return true;
+}
+
+bool getVec2(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, Vec2& out) {
+  std::vector<double> v;
+  if (!getDoubles(interp, obj, what, 2, v)) return false;
+  out = Vec2(v[0], v[1]);
+  return true;
+}
+
+bool getChoice(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, const char* const* table,
+               int& index) {
+  return Tcl_GetIndexFromObjStruct(interp, obj, table, sizeof(const char*), what, TCL_EXACT,
+                                   &index) == TCL_OK;
+}
+
+int optionIndex(Tcl_Interp* interp, Tcl_Obj* name, const OptionSpec* table) {
+  int index = -1;
+  if (Tcl_GetIndexFromObjStruct(interp, name, table, sizeof(OptionSpec), "option", TCL_EXACT,
+                                &index) != TCL_OK)
+    return -1;
+  return index;
+}
+
+bool parseOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first,
+                  const OptionSpec* table, const std::function<bool(int, Tcl_Obj*)>& handle) {
+  for (int i = first; i < objc; i += 2) {
+    const int index = optionIndex(interp, objv[i], table);
+    if (index < 0) return false;
+    if (i + 1 >= objc) {
+      fail(interp, "VALUE MISSING",
+           std::string("value for \"") + Tcl_GetString(objv[i]) + "\" missing");
+      return false;
+    }
+    if (!handle(index, objv[i + 1])) return false;
+  }
+  return true;
+}
+
+Tcl_Obj* newDouble(double v) { return Tcl_NewDoubleObj(v); }
+
+Tcl_Obj* newVec2(const Vec2& v) {
+  Tcl_Obj* items[2] = {Tcl_NewDoubleObj(v.x()), Tcl_NewDoubleObj(v.y())};
+  return Tcl_NewListObj(2, items);
+}
+
+Tcl_Obj* newString(const std::string& s) {
+  return Tcl_NewStringObj(s.data(), static_cast<int>(s.size()));
+}
+
+Tcl_Obj* newDict(std::initializer_list<std::pair<const char*, Tcl_Obj*>> items) {
+  Tcl_Obj* d = Tcl_NewDictObj();
+  for (const auto& [k, v] : items) dictPut(d, k, v);
+  return d;
+}
+
+void dictPut(Tcl_Obj* dict, const char* key, Tcl_Obj* value) {
+  Tcl_DictObjPut(nullptr, dict, Tcl_NewStringObj(key, -1), value);
+}
+
+std::string helpText(const char* noun, std::initializer_list<const char*> verbs,
+                     const OptionSpec* options) {
+  std::string text;
+  for (const char* v : verbs) text += std::string(noun) + " " + v + "\n";
+  if (options && options->name) {
+    text += "options:\n";
+    for (const OptionSpec* o = options; o->name; ++o)
+      text += std::string("  ") + o->name + " " + o->synopsis + "\n      " + o->help + "\n";
+  }
+  if (!text.empty()) text.pop_back();
+  return text;
+}
+
+void makeEnsemble(Tcl_Interp* interp, const char* qualifiedName, std::initializer_list<Verb> verbs,
+                  ClientData data) {
+  Tcl_Namespace* ns = Tcl_CreateNamespace(interp, qualifiedName, nullptr, nullptr);
+  Tcl_Obj* map = Tcl_NewDictObj();
+  for (const Verb& v : verbs) {
+    const std::string full = std::string(qualifiedName) + "::" + v.name;
+    if (v.proc) Tcl_CreateObjCommand(interp, full.c_str(), v.proc, data, nullptr);
+    Tcl_DictObjPut(nullptr, map, Tcl_NewStringObj(v.name, -1), Tcl_NewStringObj(full.c_str(), -1));
+  }
+  Tcl_Command ensemble = Tcl_CreateEnsemble(interp, qualifiedName, ns, 0);
+  Tcl_SetEnsembleMappingDict(interp, ensemble, map);
+}
+
+}  // namespace sf::tcl

@@ -1,0 +1,33 @@
+// help: the ensembles and commands, one line each.
+#include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/session.hpp"
+
+namespace sf::tcl {
+namespace {
+
+constexpr const char* kHelp =
+    "sandflow commands (\"NOUN help\" lists a noun's verbs and options):\n"
+    "  lattice   the lattice-Boltzmann fluid: create, configure, info, probe, obstacles\n"
+    "  sim       simulation settings and state: configure -timestep -threads, info\n"
+    "  run N ?-every K script?   advance N steps\n"
+    "  step      advance one step\n"
+    "  reset     empty the scene\n"
+    "  output    write results: vtk PREFIX\n"
+    "  help      this text";
+
+int Help(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, "");
+    return TCL_ERROR;
+  }
+  Tcl_SetObjResult(interp, Tcl_NewStringObj(kHelp, -1));
+  return TCL_OK;
+}
+
+}  // namespace
+
+void registerHelpCommand(Tcl_Interp* interp, Session* session) {
+  Tcl_CreateObjCommand(interp, "::sf::help", Help, session, nullptr);
+}
+
+}  // namespace sf::tcl

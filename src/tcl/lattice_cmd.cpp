@@ -1,0 +1,496 @@
+// lattice create|configure|cget|info|probe|obstacle|obstacles|delete|help
+#include <array>
+#include <cmath>
+
+#include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/session.hpp"
+
+namespace sf::tcl {
+namespace {
+
+using lb::LatticeDef;
+using lb::SideKind;
+
+enum Opt {
+  kOrigin, kSize, kCells, kSpacing, kViscosity, kDensity, kTau, kPeriodic, kWalls, kForcing,
+  kCollision, kForceScheme, kMagic, kOptionCount
+};
+
+// Options are converted in this order, so -periodic is applied before -walls.
+const OptionSpec kOptions[] = {
+    {"-origin", "{x0 y0}", "lower-left corner (default {0 0})"},
+    {"-size", "{Lx Ly}", "width and height, whole numbers of spacings"},
+    {"-cells", "NX", "cells across x (or give -spacing)"},
+    {"-spacing", "h", "node spacing (or give -cells)"},
+    {"-viscosity", "nu", "kinematic viscosity; with tau it sets the timestep"},
+    {"-density", "rho0", "initial and reference density (default 1)"},
+    {"-tau", "tau", "relaxation time > 0.5 (default 1, or from sim -timestep)"},
+    {"-periodic", "{x y}", "periodic axes: two booleans, or axis names (default {1 0})"},
+    {"-walls", "{side kind ...}",
+     "sides left right bottom top: noslip ?{vx vy}?, slip, periodic, velocity {vx vy}, "
+     "pressure p"},
+    {"-forcing", "{Fx Fy}", "body force per unit area (rho a) (default {0 0})"},
+    {"-collision", "bgk|trt", "collision operator (default bgk)"},
+    {"-forcescheme", "nodal|guo", "body-force scheme (default nodal, the thesis's)"},
+    {"-magic", "Lambda", "TRT magic parameter (default 0.1875: walls exactly halfway)"},
+    {nullptr, nullptr, nullptr}};
+
+const char* const kCollisionNames[] = {"bgk", "trt", nullptr};
+const char* const kForceSchemeNames[] = {"nodal", "guo", nullptr};
+const char* const kSideNames[] = {"left", "right", "bottom", "top", nullptr};
+const char* const kKindNames[] = {"periodic", "noslip", "slip", "velocity", "pressure", nullptr};
+
+Session& sessionOf(ClientData data) { return *static_cast<Session*>(data); }
+
+bool parseWallSpec(Tcl_Interp* interp, Tcl_Obj* spec, lb::SideDef& side) {
+  int n = 0;
+  Tcl_Obj** words = nullptr;
+  if (Tcl_ListObjGetElements(interp, spec, &n, &words) != TCL_OK) return false;
+  int kind = 0;
+  if (n == 0) return reject(interp, "VALUE WALLS", "empty wall kind in -walls");
+  if (!getChoice(interp, words[0], "wall kind", kKindNames, kind)) return false;
+  side = lb::SideDef{static_cast<SideKind>(kind)};
+  const char* usage[] = {"periodic", "noslip ?{vx vy}?", "slip", "velocity {vx vy}", "pressure p"};
+  const int wanted = (kind == int(SideKind::velocity) || kind == int(SideKind::pressure)) ? 2 : 1;
+  const bool ok = n == wanted || (kind == int(SideKind::noslip) && n == 2);
+  if (!ok)
+    return fail(interp, "VALUE WALLS",
+                std::string("wall \"") + Tcl_GetString(spec) + "\" must be " + usage[kind]) ==
+           TCL_OK;
+  if (kind == int(SideKind::pressure)) return getDouble(interp, words[1], "-walls", side.pressure);
+  if (n == 2) return getVec2(interp, words[1], "-walls", side.velocity);
+  return true;
+}
+
+bool parseWalls(Tcl_Interp* interp, Tcl_Obj* value, LatticeDef& def) {
+  int n = 0;
+  Tcl_Obj** items = nullptr;
+  if (Tcl_ListObjGetElements(interp, value, &n, &items) != TCL_OK) return false;
+  if (n % 2)
+    return fail(interp, "VALUE WALLS",
+                "-walls must be a list of side and kind pairs, e.g. {bottom noslip top slip}") ==
+           TCL_OK;
+  for (int i = 0; i < n; i += 2) {
+    int side = 0;
+    if (!getChoice(interp, items[i], "side", kSideNames, side)) return false;
+    if (!parseWallSpec(interp, items[i + 1], def.sides[side])) return false;
+    if (def.sides[side].kind == SideKind::periodic) def.sides[side ^ 1] = def.sides[side];
+  }
+  return true;
+}
+
+bool parsePeriodic(Tcl_Interp* interp, Tcl_Obj* value, LatticeDef& def) {
+  int n = 0;
+  Tcl_Obj** items = nullptr;
+  if (Tcl_ListObjGetElements(interp, value, &n, &items) != TCL_OK) return false;
+  bool flags[2] = {false, false};
+  int b0 = 0, b1 = 0;
+  if (n == 2 && Tcl_GetBooleanFromObj(nullptr, items[0], &b0) == TCL_OK &&
+      Tcl_GetBooleanFromObj(nullptr, items[1], &b1) == TCL_OK) {
+    flags[0] = b0, flags[1] = b1;
+  } else {
+    static const char* const axes[] = {"x", "y", nullptr};
+    for (int i = 0; i < n; ++i) {
+      int axis = 0;
+      if (!getChoice(interp, items[i], "periodic axis", axes, axis)) return false;
+      flags[axis] = true;
+    }
+  }
+  for (int axis = 0; axis < 2; ++axis)
+    for (int side : {2 * axis, 2 * axis + 1}) {
+      if (flags[axis]) def.sides[side] = lb::SideDef{SideKind::periodic};
+      else if (def.sides[side].kind == SideKind::periodic) def.sides[side] = lb::SideDef{};
+    }
+  return true;
+}
+
+// Converts the options in objv[first..] into `def`; `given` records which appeared.
+bool applyOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first, LatticeDef& def,
+                  std::array<bool, kOptionCount>& given) {
+  std::array<Tcl_Obj*, kOptionCount> value{};
+  if (!parseOptions(interp, objc, objv, first, kOptions, [&](int index, Tcl_Obj* v) {
+        value[index] = v;
+        return true;
+      }))
+    return false;
+  for (int k = 0; k < kOptionCount; ++k) {
+    given[k] = value[k] != nullptr;
+    if (!value[k]) continue;
+    Tcl_Obj* v = value[k];
+    const char* name = kOptions[k].name;
+    double d = 0;
+    int index = 0;
+    bool ok = true;
+    switch (k) {
+      case kOrigin: ok = getVec2(interp, v, name, def.origin); break;
+      case kSize: ok = getVec2(interp, v, name, def.size); break;
+      case kCells:
+        ok = getInt(interp, v, name, def.cells);
+        if (ok && def.cells < 1)
+          return reject(interp, "VALUE CELLS", "-cells must be >= 1, got " +
+                                                 std::to_string(def.cells));
+        def.spacing = 0;
+        break;
+      case kSpacing:
+        ok = getDouble(interp, v, name, def.spacing);
+        if (ok && !(def.spacing > 0))
+          return reject(interp, "VALUE SPACING", "-spacing must be > 0, got " +
+                                                   formatNumber(def.spacing));
+        def.cells = 0;
+        break;
+      case kViscosity:
+        ok = getDouble(interp, v, name, d);
+        if (ok && !(d > 0))
+          return reject(interp, "VALUE VISCOSITY",
+                      "-viscosity must be > 0, got " + formatNumber(d));
+        def.viscosity = d;
+        break;
+      case kDensity: ok = getDouble(interp, v, name, def.density); break;
+      case kTau:
+        ok = getDouble(interp, v, name, d);
+        if (ok && !(d > 0.5))
+          return reject(interp, "VALUE TAU",
+                      "tau " + formatNumber(d) + " is unstable: must exceed 0.5");
+        def.tau = d;
+        break;
+      case kPeriodic: ok = parsePeriodic(interp, v, def); break;
+      case kWalls: ok = parseWalls(interp, v, def); break;
+      case kForcing: ok = getVec2(interp, v, name, def.forcing); break;
+      case kCollision:
+        ok = getChoice(interp, v, "collision", kCollisionNames, index);
+        def.collision = static_cast<lb::Collision>(index);
+        break;
+      case kForceScheme:
+        ok = getChoice(interp, v, "force scheme", kForceSchemeNames, index);
+        def.forceScheme = static_cast<lb::ForceScheme>(index);
+        break;
+      case kMagic: ok = getDouble(interp, v, name, def.magic); break;
+    }
+    if (!ok) {
+      if (k == kPeriodic || k == kWalls || k == kCollision || k == kForceScheme) {
+        const std::string info = std::string("\n    (in ") + name + " option)";
+        Tcl_AddErrorInfo(interp, info.c_str());
+      }
+      return false;
+    }
+  }
+  return true;
+}
+
+Tcl_Obj* wallsValue(const LatticeDef& def) {
+  Tcl_Obj* d = Tcl_NewDictObj();
+  for (int s = 0; s < 4; ++s) {
+    const lb::SideDef& side = def.sides[s];
+    Tcl_Obj* spec = Tcl_NewListObj(0, nullptr);
+    Tcl_ListObjAppendElement(nullptr, spec, Tcl_NewStringObj(kKindNames[int(side.kind)], -1));
+    if (side.kind == SideKind::velocity || (side.kind == SideKind::noslip && !side.velocity.isZero()))
+      Tcl_ListObjAppendElement(nullptr, spec, newVec2(side.velocity));
+    if (side.kind == SideKind::pressure)
+      Tcl_ListObjAppendElement(nullptr, spec, newDouble(side.pressure));
+    dictPut(d, kSideNames[s], spec);
+  }
+  return d;
+}
+
+Tcl_Obj* optionValue(const lb::ResolvedLattice& p, int k) {
+  const LatticeDef& def = p.def;
+  switch (k) {
+    case kOrigin: return newVec2(def.origin);
+    case kSize: return newVec2(def.size);
+    case kCells: return Tcl_NewIntObj(p.nx);
+    case kSpacing: return newDouble(p.h);
+    case kViscosity: return newDouble(p.viscosity);
+    case kDensity: return newDouble(def.density);
+    case kTau: return newDouble(p.tau);
+    case kPeriodic: {
+      Tcl_Obj* flags[2] = {Tcl_NewBooleanObj(def.sides[lb::left].kind == SideKind::periodic),
+                           Tcl_NewBooleanObj(def.sides[lb::bottom].kind == SideKind::periodic)};
+      return Tcl_NewListObj(2, flags);
+    }
+    case kWalls: return wallsValue(def);
+    case kForcing: return newVec2(def.forcing);
+    case kCollision: return Tcl_NewStringObj(kCollisionNames[int(def.collision)], -1);
+    case kForceScheme: return Tcl_NewStringObj(kForceSchemeNames[int(def.forceScheme)], -1);
+    default: return newDouble(def.magic);
+  }
+}
+
+int LatticeCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  Session& s = sessionOf(data);
+  if (objc < 2 || objc % 2 == 0) {
+    Tcl_WrongNumArgs(interp, 1, objv,
+                     "-size {Lx Ly} (-cells NX | -spacing h) ?-option value ...?");
+    return TCL_ERROR;
+  }
+  LatticeDef def;
+  std::array<bool, kOptionCount> given{};
+  if (!applyOptions(interp, objc, objv, 1, def, given)) return TCL_ERROR;
+  if (!given[kSize]) return fail(interp, "VALUE SIZE", "lattice create needs -size {Lx Ly}");
+  if (given[kCells] == given[kSpacing])
+    return fail(interp, "VALUE CELLS", "lattice create needs exactly one of -cells and -spacing");
+  return guarded(interp, [&] {
+    s.manager.createLattice(def);
+    return TCL_OK;
+  });
+}
+
+int LatticeConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  Session& s = sessionOf(data);
+  return guarded(interp, [&] {
+    const lb::ResolvedLattice& p = s.manager.lattice().params();
+    if (objc == 1) {
+      Tcl_Obj* all = Tcl_NewListObj(0, nullptr);
+      for (int k = 0; k < kOptionCount; ++k) {
+        Tcl_ListObjAppendElement(nullptr, all, Tcl_NewStringObj(kOptions[k].name, -1));
+        Tcl_ListObjAppendElement(nullptr, all, optionValue(p, k));
+      }
+      Tcl_SetObjResult(interp, all);
+      return TCL_OK;
+    }
+    if (objc == 2) {  // like Tk: "configure -option" reports that option
+      const int k = optionIndex(interp, objv[1], kOptions);
+      if (k < 0) return TCL_ERROR;
+      Tcl_SetObjResult(interp, optionValue(p, k));
+      return TCL_OK;
+    }
+    if (objc % 2 == 0) {
+      Tcl_WrongNumArgs(interp, 1, objv, "?-option value ...?");
+      return TCL_ERROR;
+    }
+    LatticeDef def = p.def;
+    def.viscosity = p.viscosity;
+    def.tau = p.tau;
+    def.timestep = p.dt;
+    def.cells = p.nx;
+    def.spacing = 0;
+    std::array<bool, kOptionCount> given{};
+    if (!applyOptions(interp, objc, objv, 1, def, given)) return TCL_ERROR;
+    // Keep the timestep unless tau is what changed.
+    if (given[kViscosity] && !given[kTau]) def.tau.reset();
+    if (given[kTau]) def.timestep.reset();
+    s.manager.reconfigureLattice(def);
+    return TCL_OK;
+  });
+}
+
+int LatticeCget(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  Session& s = sessionOf(data);
+  if (objc != 2) {
+    Tcl_WrongNumArgs(interp, 1, objv, "-option");
+    return TCL_ERROR;
+  }
+  return guarded(interp, [&] {
+    const lb::ResolvedLattice& p = s.manager.lattice().params();
+    const int k = optionIndex(interp, objv[1], kOptions);
+    if (k < 0) return TCL_ERROR;
+    Tcl_SetObjResult(interp, optionValue(p, k));
+    return TCL_OK;
+  });
+}
+
+int LatticeInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  Session& s = sessionOf(data);
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, "");
+    return TCL_ERROR;
+  }
+  return guarded(interp, [&] {
+    const lb::Lattice& l = s.manager.lattice();
+    const lb::ResolvedLattice& p = l.params();
+    Tcl_Obj* kinds = Tcl_NewDictObj();
+    for (const auto& k : l.kinds()) dictPut(kinds, k->name(), Tcl_NewWideIntObj(Tcl_WideInt(k->count())));
+    Tcl_SetObjResult(
+        interp,
+        newDict({{"nx", Tcl_NewIntObj(p.nx)},
+                 {"ny", Tcl_NewIntObj(p.ny)},
+                 {"nodes", Tcl_NewWideIntObj(Tcl_WideInt(l.nodes()))},
+                 {"spacing", newDouble(p.h)},
+                 {"timestep", newDouble(p.dt)},
+                 {"tau", newDouble(p.tau)},
+                 {"viscosity", newDouble(p.viscosity)},
+                 {"c", newDouble(p.latticeSpeed())},
+                 {"cs", newDouble(p.soundSpeed())},
+                 {"mach", newDouble(l.maxMach())},
+                 {"mass", newDouble(l.mass())},
+                 {"momentum", newVec2(l.momentum())},
+                 {"density", newDouble(p.def.density)},
+                 {"origin", newVec2(p.def.origin)},
+                 {"size", newVec2(p.def.size)},
+                 {"forcing", newVec2(p.def.forcing)},
+                 {"collision", optionValue(p, kCollision)},
+                 {"forcescheme", optionValue(p, kForceScheme)},
+                 {"magic", newDouble(p.def.magic)},
+                 {"walls", wallsValue(p.def)},
+                 {"kinds", kinds},
+                 {"threads", Tcl_NewIntObj(l.threads())},
+                 {"memory", Tcl_NewWideIntObj(Tcl_WideInt(l.memoryBytes()))},
+                 {"bytespernode", newDouble(double(l.memoryBytes()) / double(l.nodes()))}}));
+    return TCL_OK;
+  });
+}
+
+int LatticeProbe(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  Session& s = sessionOf(data);
+  if (objc != 2) {
+    Tcl_WrongNumArgs(interp, 1, objv, "{x y}");
+    return TCL_ERROR;
+  }
+  Vec2 x;
+  if (!getVec2(interp, objv[1], "point", x)) return TCL_ERROR;
+  return guarded(interp, [&] {
+    const lb::Lattice& l = s.manager.lattice();
+    const auto node = l.nodeAt(x);
+    if (!node)
+      return fail(interp, "VALUE POINT",
+                  "point {" + formatNumber(x.x()) + " " + formatNumber(x.y()) +
+                      "} is outside the lattice");
+    const auto [i, j] = *node;
+    static const char* const kindNames[] = {"fluid", "noslip", "slip",    "solid",
+                                            "velocity", "pressure", "open"};
+    const lb::NodeKind k = l.kind(i, j);
+    const bool solid = k == lb::NodeKind::noslip || k == lb::NodeKind::slip || k == lb::NodeKind::solid;
+    Tcl_Obj* ij[2] = {Tcl_NewIntObj(i), Tcl_NewIntObj(j)};
+    Tcl_SetObjResult(interp, newDict({{"density", newDouble(l.density(i, j))},
+                                      {"pressure", newDouble(l.pressure(i, j))},
+                                      {"velocity", newVec2(l.velocity(i, j))},
+                                      {"solid", newDouble(solid ? 1.0 : 0.0)},
+                                      {"kind", Tcl_NewStringObj(kindNames[int(k)], -1)},
+                                      {"node", Tcl_NewListObj(2, ij)},
+                                      {"position", newVec2(l.position(i, j))}}));
+    return TCL_OK;
+  });
+}
+
+int LatticeDelete(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  Session& s = sessionOf(data);
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, "");
+    return TCL_ERROR;
+  }
+  return guarded(interp, [&] {
+    s.manager.deleteLattice();
+    return TCL_OK;
+  });
+}
+
+// ---- obstacles ---------------------------------------------------------------
+
+const OptionSpec kRectOptions[] = {
+    {"-slip", "0|1", "specular (free-slip) walls instead of no-slip (default 0)"},
+    {"-id", "N", "the obstacle's id (default: the next free one)"},
+    {nullptr, nullptr, nullptr}};
+
+int ObstacleRect(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  Session& s = sessionOf(data);
+  if (objc < 2 || objc % 2 == 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, "{x0 y0 x1 y1} ?-slip 0|1? ?-id N?");
+    return TCL_ERROR;
+  }
+  std::vector<double> box;
+  if (!getDoubles(interp, objv[1], "rect", 4, box)) return TCL_ERROR;
+  lb::RectObstacle r;
+  r.id = -1;
+  r.lo = Vec2(box[0], box[1]);
+  r.hi = Vec2(box[2], box[3]);
+  if (!parseOptions(interp, objc, objv, 2, kRectOptions, [&](int k, Tcl_Obj* v) {
+        if (k == 0) return getBool(interp, v, "-slip", r.slip);
+        if (!getInt(interp, v, "-id", r.id)) return false;
+        if (r.id < 0)
+          return reject(interp, "VALUE ID", "-id must be >= 0, got " + std::to_string(r.id));
+        return true;
+      }))
+    return TCL_ERROR;
+  return guarded(interp, [&] {
+    Tcl_SetObjResult(interp, Tcl_NewIntObj(s.manager.lattice().addObstacle(r)));
+    return TCL_OK;
+  });
+}
+
+bool getObstacleId(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int& id) {
+  if (objc != 2) {
+    Tcl_WrongNumArgs(interp, 1, objv, "ID");
+    return false;
+  }
+  return getInt(interp, objv[1], "ID", id);
+}
+
+int ObstacleDelete(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  int id = 0;
+  if (!getObstacleId(interp, objc, objv, id)) return TCL_ERROR;
+  return guarded(interp, [&] {
+    sessionOf(data).manager.lattice().deleteObstacle(id);
+    return TCL_OK;
+  });
+}
+
+int ObstacleInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  int id = 0;
+  if (!getObstacleId(interp, objc, objv, id)) return TCL_ERROR;
+  return guarded(interp, [&] {
+    const lb::ObstacleInfo o = sessionOf(data).manager.lattice().obstacleInfo(id);
+    Tcl_Obj* rect[4] = {newDouble(o.shape.lo.x()), newDouble(o.shape.lo.y()),
+                        newDouble(o.shape.hi.x()), newDouble(o.shape.hi.y())};
+    Tcl_SetObjResult(interp, newDict({{"id", Tcl_NewIntObj(o.shape.id)},
+                                      {"type", Tcl_NewStringObj("rect", -1)},
+                                      {"rect", Tcl_NewListObj(4, rect)},
+                                      {"slip", Tcl_NewBooleanObj(o.shape.slip)},
+                                      {"nodes", Tcl_NewWideIntObj(Tcl_WideInt(o.nodes))},
+                                      {"force", newVec2(o.force)},
+                                      {"torque", newDouble(o.torque)}}));
+    return TCL_OK;
+  });
+}
+
+int LatticeObstacles(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, "");
+    return TCL_ERROR;
+  }
+  return guarded(interp, [&] {
+    Tcl_Obj* ids = Tcl_NewListObj(0, nullptr);
+    for (int id : sessionOf(data).manager.lattice().obstacleIds())
+      Tcl_ListObjAppendElement(nullptr, ids, Tcl_NewIntObj(id));
+    Tcl_SetObjResult(interp, ids);
+    return TCL_OK;
+  });
+}
+
+int LatticeHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, "");
+    return TCL_ERROR;
+  }
+  Tcl_SetObjResult(
+      interp,
+      newString(helpText("lattice",
+                         {"create -size {Lx Ly} (-cells NX | -spacing h) ?-option value ...?",
+                          "configure ?-option value ...?", "cget -option",
+                          "info                    -> dict nx ny nodes spacing timestep tau ...",
+                          "probe {x y}             -> dict density pressure velocity solid ...",
+                          "obstacle rect {x0 y0 x1 y1} ?-slip 0|1? ?-id N?   -> id",
+                          "obstacle delete ID", "obstacle info ID    -> dict ... force torque",
+                          "obstacles               -> ids", "delete", "help"},
+                         kOptions)));
+  return TCL_OK;
+}
+
+}  // namespace
+
+void registerLatticeCommands(Tcl_Interp* interp, Session* session) {
+  makeEnsemble(interp, "::sf::lattice",
+               {{"create", LatticeCreate},
+                {"configure", LatticeConfigure},
+                {"cget", LatticeCget},
+                {"info", LatticeInfo},
+                {"probe", LatticeProbe},
+                {"obstacle", nullptr},
+                {"obstacles", LatticeObstacles},
+                {"delete", LatticeDelete},
+                {"help", LatticeHelp}},
+               session);
+  makeEnsemble(interp, "::sf::lattice::obstacle",
+               {{"rect", ObstacleRect}, {"delete", ObstacleDelete}, {"info", ObstacleInfo}},
+               session);
+}
+
+}  // namespace sf::tcl

@@ -1,0 +1,50 @@
+// Package initialisation: one Session per interpreter, the commands in ::sf.
+#include "sandflow/tcl/session.hpp"
+
+namespace sf::tcl {
+namespace {
+
+void deleteSession(ClientData data, Tcl_Interp*) { delete static_cast<Session*>(data); }
+
+// Warnings go through a procedure the user (or the GUI) may redefine.
+constexpr const char* kWarnProc = R"tcl(
+namespace eval ::sf {
+  if {[info commands ::sf::warn] eq ""} {
+    proc warn {message} { puts stderr "sandflow warning: $message" }
+  }
+  namespace export lattice sim run step reset output help
+}
+)tcl";
+
+}  // namespace
+
+void flushWarnings(Session& session) {
+  for (const std::string& w : session.manager.takeWarnings()) {
+    Tcl_Obj* cmd[2] = {Tcl_NewStringObj("::sf::warn", -1), Tcl_NewStringObj(w.c_str(), -1)};
+    for (Tcl_Obj* o : cmd) Tcl_IncrRefCount(o);
+    // A failing warn procedure must not turn a warning into an error of the run.
+    Tcl_Obj* saved = Tcl_GetObjResult(session.interp);
+    Tcl_IncrRefCount(saved);
+    Tcl_EvalObjv(session.interp, 2, cmd, TCL_EVAL_GLOBAL);
+    Tcl_SetObjResult(session.interp, saved);
+    Tcl_DecrRefCount(saved);
+    for (Tcl_Obj* o : cmd) Tcl_DecrRefCount(o);
+  }
+}
+
+}  // namespace sf::tcl
+
+extern "C" int Sandflow_Init(Tcl_Interp* interp) {
+  using namespace sf::tcl;
+  if (Tcl_PkgRequire(interp, "Tcl", "8.6", 0) == nullptr) return TCL_ERROR;
+  auto* session = new Session;
+  session->interp = interp;
+  Tcl_CallWhenDeleted(interp, deleteSession, session);
+  registerLatticeCommands(interp, session);
+  registerSimCommands(interp, session);
+  registerRunCommands(interp, session);
+  registerOutputCommands(interp, session);
+  registerHelpCommand(interp, session);
+  if (Tcl_Eval(interp, kWarnProc) != TCL_OK) return TCL_ERROR;
+  return Tcl_PkgProvide(interp, "sandflow", SANDFLOW_VERSION);
+}

@@ -1,0 +1,137 @@
+// sim configure|cget|info|help
+#include <array>
+#include <cmath>
+
+#include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/session.hpp"
+
+namespace sf::tcl {
+namespace {
+
+enum Opt { kTimestep, kThreads, kOptionCount };
+
+const OptionSpec kOptions[] = {
+    {"-timestep", "dt", "fix the timestep (a lattice's tau then follows from it)"},
+    {"-threads", "n", "threads for the step (results do not depend on it)"},
+    {nullptr, nullptr, nullptr}};
+
+Session& sessionOf(ClientData data) { return *static_cast<Session*>(data); }
+
+Tcl_Obj* optionValue(const sim::Manager& m, int k) {
+  if (k == kTimestep) return newDouble(m.timestep());
+  return Tcl_NewIntObj(m.threads());
+}
+
+int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  sim::Manager& m = sessionOf(data).manager;
+  if (objc == 1) {
+    Tcl_Obj* all = Tcl_NewListObj(0, nullptr);
+    for (int k = 0; k < kOptionCount; ++k) {
+      Tcl_ListObjAppendElement(nullptr, all, Tcl_NewStringObj(kOptions[k].name, -1));
+      Tcl_ListObjAppendElement(nullptr, all, optionValue(m, k));
+    }
+    Tcl_SetObjResult(interp, all);
+    return TCL_OK;
+  }
+  if (objc == 2) {
+    const int k = optionIndex(interp, objv[1], kOptions);
+    if (k < 0) return TCL_ERROR;
+    Tcl_SetObjResult(interp, optionValue(m, k));
+    return TCL_OK;
+  }
+  if (objc % 2 == 0) {
+    Tcl_WrongNumArgs(interp, 1, objv, "?-option value ...?");
+    return TCL_ERROR;
+  }
+  // Stage every value, validate, then commit: a refused option changes nothing.
+  std::optional<double> timestep;
+  std::optional<int> threads;
+  if (!parseOptions(interp, objc, objv, 1, kOptions, [&](int k, Tcl_Obj* v) {
+        if (k == kTimestep) {
+          double dt = 0;
+          if (!getDouble(interp, v, "-timestep", dt)) return false;
+          if (!(dt > 0)) return reject(interp, "VALUE TIMESTEP", "-timestep must be > 0, got " + formatNumber(dt));
+          timestep = dt;
+        } else {
+          int n = 0;
+          if (!getInt(interp, v, "-threads", n)) return false;
+          if (n < 1 || n > 1024)
+            return reject(interp, "VALUE THREADS", "-threads must be 1 to 1024, got " + std::to_string(n));
+          threads = n;
+        }
+        return true;
+      }))
+    return TCL_ERROR;
+  return guarded(interp, [&] {
+    if (timestep) m.setTimestep(*timestep);  // the only step that can refuse
+    if (threads) m.setThreads(*threads);
+    return TCL_OK;
+  });
+}
+
+int SimCget(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 2) {
+    Tcl_WrongNumArgs(interp, 1, objv, "-option");
+    return TCL_ERROR;
+  }
+  const int k = optionIndex(interp, objv[1], kOptions);
+  if (k < 0) return TCL_ERROR;
+  Tcl_SetObjResult(interp, optionValue(sessionOf(data).manager, k));
+  return TCL_OK;
+}
+
+int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, "");
+    return TCL_ERROR;
+  }
+  const sim::Manager& m = sessionOf(data).manager;
+  const bool lattice = m.hasLattice();
+  const double mach = lattice ? m.lattice().maxMach() : 0.0;
+  const double tau = lattice ? m.lattice().params().tau : 0.0;
+  Tcl_Obj* warnings = Tcl_NewListObj(0, nullptr);
+  for (const std::string& w : m.warnings())
+    Tcl_ListObjAppendElement(nullptr, warnings, newString(w));
+  const bool stable = !lattice || (std::isfinite(mach) && mach <= m.machStopLimit() && tau > 0.5);
+  Tcl_SetObjResult(
+      interp, newDict({{"time", newDouble(m.time())},
+                       {"step", Tcl_NewWideIntObj(m.stepCount())},
+                       {"timestep", newDouble(m.timestep())},
+                       {"tau", newDouble(tau)},
+                       {"mach", newDouble(mach)},
+                       {"elements", Tcl_NewIntObj(0)},
+                       {"contacts", Tcl_NewIntObj(0)},
+                       {"bonds", Tcl_NewIntObj(0)},
+                       {"broken", Tcl_NewIntObj(0)},
+                       {"nodes", Tcl_NewWideIntObj(lattice ? Tcl_WideInt(m.lattice().nodes()) : 0)},
+                       {"mlups", newDouble(m.mlups())},
+                       {"stable", Tcl_NewBooleanObj(stable)},
+                       {"threads", Tcl_NewIntObj(m.threads())},
+                       {"warnings", warnings}}));
+  return TCL_OK;
+}
+
+int SimHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, "");
+    return TCL_ERROR;
+  }
+  Tcl_SetObjResult(interp, newString(helpText(
+                               "sim",
+                               {"configure ?-option value ...?", "cget -option",
+                                "info    -> dict time step timestep tau mach elements contacts "
+                                "bonds broken nodes mlups stable",
+                                "help"},
+                               kOptions)));
+  return TCL_OK;
+}
+
+}  // namespace
+
+void registerSimCommands(Tcl_Interp* interp, Session* session) {
+  makeEnsemble(interp, "::sf::sim",
+               {{"configure", SimConfigure}, {"cget", SimCget}, {"info", SimInfo}, {"help", SimHelp}},
+               session);
+}
+
+}  // namespace sf::tcl
