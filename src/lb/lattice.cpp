@@ -44,6 +44,7 @@ Lattice::Lattice(const ResolvedLattice& params) : p_(params) {
     for (std::ptrdiff_t k = 0; k < n; ++k) a[k] = b[k] = value;
   }
   rebuildTopology();
+  initialize([](const Vec2&, double&, Vec2&) {});
 }
 
 Lattice::~Lattice() {
@@ -226,10 +227,29 @@ void Lattice::initialize(const std::function<void(const Vec2&, double&, Vec2&)>&
         throw Error("VALUE FIELD", "initial field is not a positive finite density and "
                                    "finite velocity at {" + formatNumber(position(i, j).x()) +
                                        " " + formatNumber(position(i, j).y()) + "}");
-      const Vec2 ul = u * (p_.dt / p_.h);
-      for (int d = 0; d < 9; ++d) f_[d * stride_ + x] = equilibrium(d, rho, ul.x(), ul.y());
+      setNodeState(x, rho, u * (p_.dt / p_.h));
     }
   for (const auto& k : kinds_) k->fill(f_);
+}
+
+void Lattice::setNodeState(std::int64_t x, double rho, const Vec2& u) {
+  // Stored populations are post-collision: collide an equilibrium whose
+  // collision velocity is u, so that the node reports u (and the force acts
+  // from t = 0 on).
+  const StepContext ctx = context();
+  const double back = ctx.forceScheme == ForceScheme::guo ? 0.5 : 0.0;
+  const Vec2 ueq = u - back * Vec2(ctx.params.fx, ctx.params.fy) / rho;
+  double f[9];
+  for (int d = 0; d < 9; ++d) f[d] = equilibrium(d, rho, ueq.x(), ueq.y());
+  double u2;
+  const bool guo = ctx.forceScheme == ForceScheme::guo;
+  if (ctx.collision == Collision::bgk)
+    guo ? collide<Collision::bgk, ForceScheme::guo>(f, ctx.params, u2)
+        : collide<Collision::bgk, ForceScheme::nodal>(f, ctx.params, u2);
+  else
+    guo ? collide<Collision::trt, ForceScheme::guo>(f, ctx.params, u2)
+        : collide<Collision::trt, ForceScheme::nodal>(f, ctx.params, u2);
+  for (int d = 0; d < 9; ++d) f_[d * stride_ + x] = f[d];
 }
 
 double Lattice::population(int direction, int i, int j) const {

@@ -212,7 +212,7 @@ void Lattice::rebuildTopology() {
     for (int i = 0; i < nx; ++i) {
       const std::int64_t x = index(i, j);
       if (holdsFluidKind(kind_[x]) && !previous.empty() && !holdsFluidKind(previous[x]))
-        for (int d = 0; d < 9; ++d) f_[d * stride_ + x] = d2q9::w[d] * rho0;
+        setNodeState(x, rho0, Vec2::Zero());
     }
   for (const auto& k : kinds_) k->fill(f_);
 }

@@ -85,6 +85,7 @@ class Lattice {
   void rebuildTopology();
   StepContext context() const;
   bool holdsFluid(std::int64_t node) const;
+  void setNodeState(std::int64_t node, double rho, const Vec2& latticeU);
   Vec2 latticeVelocity(std::int64_t node) const;  // pre-collision velocity, lattice units
   [[noreturn]] void reportInstability(const StepStats& stats, double machLimit) const;
 

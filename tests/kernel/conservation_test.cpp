@@ -1,0 +1,170 @@
+// Conservation, determinism and the stability watch of the lattice.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "sandflow/core/error.hpp"
+#include "lattice_helpers.hpp"
+
+namespace sf {
+namespace {
+
+// A random but smooth-enough initial state, repeatable.
+void randomize(lb::Lattice& lattice, double speed, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> d(-1, 1);
+  lattice.initialize([&](const Vec2&, double& rho, Vec2& u) {
+    rho = 1.0 + 0.01 * d(rng);
+    u = speed * Vec2(d(rng), d(rng)) + Vec2(0.3 * speed, 0.1 * speed);
+  });
+}
+
+lb::LatticeDef periodicBox(int n) {
+  lb::LatticeDef def;
+  def.size = Vec2(n, n);
+  def.cells = n;
+  def.viscosity = 0.05;
+  for (auto& side : def.sides) side = lb::SideDef{lb::SideKind::periodic};
+  return def;
+}
+
+TEST(Conservation, MassOverTenThousandStepsWithWallsObstacleAndForcing) {
+  lb::LatticeDef def = test::channelDef(48, 32, 0.9);
+  def.forcing = Vec2(1e-6, 0);
+  lb::Lattice lattice(lb::resolve(def));
+  lattice.addObstacle({-1, Vec2(10, 10), Vec2(16, 20), false});
+  lattice.addObstacle({-1, Vec2(30, 4), Vec2(36, 12), true});
+  const double m0 = lattice.mass();
+  for (int s = 0; s < 10000; ++s) lattice.step();
+  EXPECT_LE(std::abs(lattice.mass() - m0) / m0, 1e-12);
+}
+
+TEST(Conservation, MassAndMomentumOnAPeriodicLattice) {
+  for (lb::Collision c : {lb::Collision::bgk, lb::Collision::trt}) {
+    lb::LatticeDef def = periodicBox(32);
+    def.collision = c;
+    lb::Lattice lattice(lb::resolve(def));
+    const double cl = lattice.params().latticeSpeed();
+    randomize(lattice, 0.02 * cl, 7);
+    const double m0 = lattice.mass();
+    const Vec2 p0 = lattice.momentum();
+    for (int s = 0; s < 10000; ++s) lattice.step();
+    EXPECT_LE(std::abs(lattice.mass() - m0) / m0, 1e-12);
+    EXPECT_LE((lattice.momentum() - p0).norm() / p0.norm(), 1e-12);
+  }
+}
+
+TEST(Conservation, ForcingAddsExactlyItsImpulse) {
+  lb::LatticeDef def = periodicBox(16);
+  def.forcing = Vec2(2e-5, -1e-5);
+  for (lb::ForceScheme s : {lb::ForceScheme::nodal, lb::ForceScheme::guo}) {
+    def.forceScheme = s;
+    lb::Lattice lattice(lb::resolve(def));
+    const int steps = 500;
+    for (int k = 0; k < steps; ++k) lattice.step();
+    const double area = 16.0 * 16.0;
+    const Vec2 expected = def.forcing * area * steps * lattice.params().dt;
+    EXPECT_LE((lattice.momentum() - expected).norm() / expected.norm(), 1e-10);
+  }
+}
+
+// Everything at once: walls, moving wall, slip, obstacles, Zou-He, forcing.
+lb::LatticeDef busyScene() {
+  lb::LatticeDef def = test::channelDef(96, 40, 0.7);
+  const double cs = lb::resolve(def).soundSpeed();
+  def.sides[lb::left] = lb::SideDef{lb::SideKind::velocity, Vec2(0.001, 0)};
+  def.sides[lb::right] = lb::SideDef{lb::SideKind::pressure, Vec2::Zero(), cs * cs};
+  def.sides[lb::top] = lb::SideDef{lb::SideKind::noslip, Vec2(0.002, 0)};
+  def.forcing = Vec2(1e-7, 1e-8);
+  return def;
+}
+
+TEST(Determinism, OneAndTwoThreadsGiveIdenticalPopulations) {
+  for (lb::Collision c : {lb::Collision::bgk, lb::Collision::trt}) {
+    std::vector<double> result[2];
+    for (int threads : {1, 2}) {
+      lb::LatticeDef def = busyScene();
+      def.collision = c;
+      lb::Lattice lattice(lb::resolve(def));
+      lattice.setThreads(threads);
+      lattice.addObstacle({-1, Vec2(20, 15), Vec2(28, 25), false});
+      lattice.addObstacle({-1, Vec2(50, 0), Vec2(60, 6), true});
+      for (int s = 0; s < 1000; ++s) lattice.step();
+      const double* f = lattice.populationData();
+      result[threads - 1].assign(f, f + lattice.populationCount());
+    }
+    ASSERT_EQ(result[0].size(), result[1].size());
+    EXPECT_EQ(0, std::memcmp(result[0].data(), result[1].data(), result[0].size() * sizeof(double)));
+  }
+}
+
+TEST(Stability, MachBlowUpStopsAndKeepsTheLastGoodState) {
+  lb::LatticeDef def = test::channelDef(16, 16, 1.0);
+  def.forcing = Vec2(5e-4, 0);  // accelerates without bound in a periodic box
+  for (auto& side : def.sides) side = lb::SideDef{lb::SideKind::periodic};
+  lb::Lattice lattice(lb::resolve(def));
+  std::vector<double> good;
+  int steps = 0;
+  try {
+    for (; steps < 100000; ++steps) {
+      const double* f = lattice.populationData();
+      good.assign(f, f + lattice.populationCount());
+      lattice.step(0.3);
+    }
+    FAIL() << "no instability reported";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), "UNSTABLE MACH");
+    EXPECT_NE(std::string(e.what()).find("node ("), std::string::npos) << e.what();
+  }
+  EXPECT_GT(steps, 10);
+  EXPECT_EQ(0, std::memcmp(good.data(), lattice.populationData(), good.size() * sizeof(double)));
+  EXPECT_LE(lattice.maxMach(), 0.3);
+}
+
+TEST(Stability, NanIsReportedWithItsNode) {
+  lb::LatticeDef def = periodicBox(8);
+  lb::Lattice lattice(lb::resolve(def));
+  lattice.initialize([&](const Vec2& x, double& rho, Vec2&) {
+    if (x.x() > 3 && x.x() < 4 && x.y() > 5 && x.y() < 6) rho = 1e308;
+  });
+  try {
+    for (int s = 0; s < 10; ++s) lattice.step();
+    FAIL() << "no instability reported";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code().rfind("UNSTABLE", 0), 0u) << e.code();
+  }
+}
+
+TEST(Obstacle, DragBalancesTheBodyForceAtSteadyState) {
+  // Fully periodic: the obstacle alone holds the fluid back, so at steady state
+  // its drag equals the body force on all the fluid.
+  lb::LatticeDef def = periodicBox(32);
+  def.viscosity = 0.2;
+  def.forcing = Vec2(2e-6, 0);
+  lb::Lattice lattice(lb::resolve(def));
+  const int id = lattice.addObstacle({-1, Vec2(12, 12), Vec2(20, 20), false});
+  test::runToSteady(lattice, 1e-13, 200000);
+  const lb::ObstacleInfo info = lattice.obstacleInfo(id);
+  const double fluidArea = 32.0 * 32.0 - double(info.nodes);
+  EXPECT_NEAR(info.force.x() / (def.forcing.x() * fluidArea), 1.0, 1e-6);
+  EXPECT_NEAR(info.force.y(), 0.0, 1e-9 * info.force.x());
+  EXPECT_NEAR(info.torque, 0.0, 1e-6 * info.force.x());  // symmetric about y
+}
+
+TEST(Lattice, RefusesUnstableAndInconsistentDefinitions) {
+  lb::LatticeDef def = test::channelDef(8, 8, 0.5);
+  EXPECT_THROW(lb::resolve(def), Error);
+  def = test::channelDef(8, 8, 1.0);
+  def.size = Vec2(8, 8.5);
+  EXPECT_THROW(lb::resolve(def), Error);
+  def = test::channelDef(8, 8, 1.0);
+  def.sides[lb::left] = lb::SideDef{lb::SideKind::noslip};
+  EXPECT_THROW(lb::resolve(def), Error);  // right is still periodic
+  def = test::channelDef(100000, 100000, 1.0);
+  EXPECT_THROW(lb::resolve(def), Error);  // beyond memory, refused before allocating
+}
+
+}  // namespace
+}  // namespace sf
