@@ -46,6 +46,8 @@ int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     const auto t0 = std::chrono::steady_clock::now();
     if (advance(s) != TCL_OK) return TCL_ERROR;
     computeSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (s.manager.hasLattice())  // the rate so far, so that -every scripts can report it
+      s.manager.setMlups(double(s.manager.lattice().nodes()) * double(done + 1) / computeSeconds / 1e6);
     if (script && (done + 1) % every == 0) {
       const int code = Tcl_EvalObjEx(interp, script, TCL_EVAL_GLOBAL);
       if (code == TCL_BREAK) {
@@ -61,8 +63,6 @@ int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
       if (code != TCL_OK && code != TCL_CONTINUE) return code;
     }
   }
-  if (s.manager.hasLattice() && computeSeconds > 0)
-    s.manager.setMlups(double(s.manager.lattice().nodes()) * double(done) / computeSeconds / 1e6);
   Tcl_ResetResult(interp);
   return TCL_OK;
 }
