@@ -44,7 +44,9 @@ TEST(ZouHe, UniformInletDevelopsPoiseuilleWithTheSameFlux) {
   def.sides[lb::left] = lb::SideDef{lb::SideKind::velocity, Vec2(U, 0)};
   def.sides[lb::right] = lb::SideDef{lb::SideKind::pressure, Vec2::Zero(), cs2 * 1.0};
   lb::Lattice lattice(lb::resolve(def));
-  test::runToSteady(lattice, 1e-10, 100000);
+  // The inlet density settles slowly (time constant ~1.7e4 steps); a change
+  // below 1e-6 per 200 steps leaves ~1e-4 of the flux to go, inside the tolerances.
+  test::runToSteady(lattice, 1e-6, 100000);
   // Mass flux per unit depth is U H at the inlet; a parabola with that flux
   // peaks at 1.5 U. Compare far from both ends, with the local density.
   const int i = 2 * ny;
