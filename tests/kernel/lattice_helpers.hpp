@@ -17,13 +17,18 @@ inline lb::LatticeDef channelDef(int nx, int ny, double tau, double viscosity = 
   return def;  // periodic in x, no-slip bottom and top
 }
 
-// Steps until the largest change of u_x over `check` steps, relative to the
-// largest |u_x|, drops below `tolerance`. Returns the steps taken.
+// Steps until the largest change of a velocity component over `check` steps,
+// relative to the largest |component|, drops below `tolerance`. Returns the
+// steps taken.
 inline long runToSteady(lb::Lattice& lattice, double tolerance, long maxSteps, int check = 200) {
   auto snapshot = [&] {
     std::vector<double> u;
     for (int j = 0; j < lattice.ny(); ++j)
-      for (int i = 0; i < lattice.nx(); ++i) u.push_back(lattice.velocity(i, j).x());
+      for (int i = 0; i < lattice.nx(); ++i) {
+        const Vec2 v = lattice.velocity(i, j);
+        u.push_back(v.x());
+        u.push_back(v.y());
+      }
     return u;
   };
   std::vector<double> before = snapshot();
