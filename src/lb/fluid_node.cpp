@@ -20,14 +20,24 @@ StepStats runSpan(const StepContext& ctx, std::ptrdiff_t first, std::ptrdiff_t n
     s[i] = ctx.src + i * ctx.stride + first - pull;
     d[i] = ctx.dst + i * ctx.stride + first;
   }
-  const double* __restrict s0 = s[0]; const double* __restrict s1 = s[1];
-  const double* __restrict s2 = s[2]; const double* __restrict s3 = s[3];
-  const double* __restrict s4 = s[4]; const double* __restrict s5 = s[5];
-  const double* __restrict s6 = s[6]; const double* __restrict s7 = s[7];
+  const double* __restrict s0 = s[0];
+  const double* __restrict s1 = s[1];
+  const double* __restrict s2 = s[2];
+  const double* __restrict s3 = s[3];
+  const double* __restrict s4 = s[4];
+  const double* __restrict s5 = s[5];
+  const double* __restrict s6 = s[6];
+  const double* __restrict s7 = s[7];
   const double* __restrict s8 = s[8];
-  double* __restrict d0 = d[0]; double* __restrict d1 = d[1]; double* __restrict d2 = d[2];
-  double* __restrict d3 = d[3]; double* __restrict d4 = d[4]; double* __restrict d5 = d[5];
-  double* __restrict d6 = d[6]; double* __restrict d7 = d[7]; double* __restrict d8 = d[8];
+  double* __restrict d0 = d[0];
+  double* __restrict d1 = d[1];
+  double* __restrict d2 = d[2];
+  double* __restrict d3 = d[3];
+  double* __restrict d4 = d[4];
+  double* __restrict d5 = d[5];
+  double* __restrict d6 = d[6];
+  double* __restrict d7 = d[7];
+  double* __restrict d8 = d[8];
   const CollisionParams p = ctx.params;
 
   double mass = 0.0, maxU2 = 0.0;
@@ -37,8 +47,15 @@ StepStats runSpan(const StepContext& ctx, std::ptrdiff_t first, std::ptrdiff_t n
     double u2;
     mass += collide<C, S>(f, p, u2);
     maxU2 = u2 > maxU2 ? u2 : maxU2;
-    d0[k] = f[0]; d1[k] = f[1]; d2[k] = f[2]; d3[k] = f[3]; d4[k] = f[4];
-    d5[k] = f[5]; d6[k] = f[6]; d7[k] = f[7]; d8[k] = f[8];
+    d0[k] = f[0];
+    d1[k] = f[1];
+    d2[k] = f[2];
+    d3[k] = f[3];
+    d4[k] = f[4];
+    d5[k] = f[5];
+    d6[k] = f[6];
+    d7[k] = f[7];
+    d8[k] = f[8];
   }
   return {mass, maxU2};
 }

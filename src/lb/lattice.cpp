@@ -14,8 +14,8 @@ double* allocatePopulations(std::size_t count) {
   const std::size_t bytes = (count * sizeof(double) + 63) / 64 * 64;
   void* p = std::aligned_alloc(64, bytes);
   if (!p)
-    throw Error("RESOURCE MEMORY", "cannot allocate " + formatNumber(bytes / 1e9) +
-                                       " GB for the lattice populations");
+    throw Error("RESOURCE MEMORY",
+                "cannot allocate " + formatNumber(bytes / 1e9) + " GB for the lattice populations");
   return static_cast<double*>(p);
 }
 
@@ -32,7 +32,7 @@ Lattice::Lattice(const ResolvedLattice& params) : p_(params) {
   } catch (...) {
     std::free(f_);
     throw;
-  } 
+  }
   // First touch in parallel, the way the step will use the memory.
   const double rho0 = p_.def.density;
   const std::ptrdiff_t n = stride_;
@@ -58,7 +58,8 @@ void Lattice::reconfigure(const ResolvedLattice& params) {
     throw Error("VALUE GEOMETRY",
                 "the lattice's origin, size and spacing are fixed: delete it and create a new one");
   if (params.def.density != p_.def.density)
-    throw Error("VALUE DENSITY", "-density is the initial state: it cannot change on a live lattice");
+    throw Error("VALUE DENSITY",
+                "-density is the initial state: it cannot change on a live lattice");
   const bool wallsChanged = [&] {
     for (int s = 0; s < 4; ++s) {
       const SideDef &a = params.def.sides[s], &b = p_.def.sides[s];
@@ -70,7 +71,9 @@ void Lattice::reconfigure(const ResolvedLattice& params) {
   if (wallsChanged) rebuildTopology();
 }
 
-void Lattice::setThreads(int threads) { threads_ = std::max(1, threads); }
+void Lattice::setThreads(int threads) {
+  threads_ = std::max(1, threads);
+}
 
 StepContext Lattice::context() const {
   StepContext c;
@@ -126,11 +129,11 @@ void Lattice::reportInstability(const StepStats& stats, double machLimit) const 
     }
   const int i = int(worst % rowStride_) - 1, j = int(worst / rowStride_) - 1;
   const Vec2 at = worst >= 0 ? position(i, j) : Vec2::Zero();
-  const std::string where = "node (" + std::to_string(i) + ", " + std::to_string(j) +
-                            ") at {" + formatNumber(at.x()) + " " + formatNumber(at.y()) + "}";
+  const std::string where = "node (" + std::to_string(i) + ", " + std::to_string(j) + ") at {" +
+                            formatNumber(at.x()) + " " + formatNumber(at.y()) + "}";
   if (nan) throw Error("UNSTABLE NAN", "the fluid became NaN at " + where);
-  throw Error("UNSTABLE MACH", "Mach number " + formatNumber(std::sqrt(stats.maxU2)) +
-                                   " exceeds " + formatNumber(machLimit) + " at " + where +
+  throw Error("UNSTABLE MACH", "Mach number " + formatNumber(std::sqrt(stats.maxU2)) + " exceeds " +
+                                   formatNumber(machLimit) + " at " + where +
                                    ": reduce the timestep or the forcing");
 }
 
@@ -154,7 +157,9 @@ bool Lattice::holdsFluid(std::int64_t x) const {
   return k == NodeKind::fluid || k == NodeKind::velocity || k == NodeKind::pressure;
 }
 
-NodeKind Lattice::kind(int i, int j) const { return kind_[index(i, j)]; }
+NodeKind Lattice::kind(int i, int j) const {
+  return kind_[index(i, j)];
+}
 
 double Lattice::density(int i, int j) const {
   const std::int64_t x = index(i, j);
@@ -224,9 +229,11 @@ void Lattice::initialize(const std::function<void(const Vec2&, double&, Vec2&)>&
       Vec2 u = Vec2::Zero();
       field(position(i, j), rho, u);
       if (!(rho > 0) || !std::isfinite(rho) || !u.allFinite())
-        throw Error("VALUE FIELD", "initial field is not a positive finite density and "
-                                   "finite velocity at {" + formatNumber(position(i, j).x()) +
-                                       " " + formatNumber(position(i, j).y()) + "}");
+        throw Error("VALUE FIELD",
+                    "initial field is not a positive finite density and "
+                    "finite velocity at {" +
+                        formatNumber(position(i, j).x()) + " " + formatNumber(position(i, j).y()) +
+                        "}");
       setNodeState(x, rho, u * (p_.dt / p_.h));
     }
   for (const auto& k : kinds_) k->fill(f_);
@@ -314,8 +321,8 @@ ObstacleInfo Lattice::obstacleInfo(int id) const {
   for (int j = 0; j < p_.ny; ++j)
     for (int i = 0; i < p_.nx; ++i) {
       const Vec2 x = position(i, j);
-      info.nodes += x.x() >= it->lo.x() && x.x() <= it->hi.x() && x.y() >= it->lo.y() &&
-                    x.y() <= it->hi.y();
+      info.nodes +=
+          x.x() >= it->lo.x() && x.x() <= it->hi.x() && x.y() >= it->lo.y() && x.y() <= it->hi.y();
     }
   // Momentum exchange over the wall links: what leaves the fluid node towards
   // the wall minus what comes back, per step.

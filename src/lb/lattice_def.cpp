@@ -35,7 +35,9 @@ double physicalMemoryBytes() {
 
 }  // namespace
 
-double ResolvedLattice::soundSpeed() const { return latticeSpeed() / std::sqrt(3.0); }
+double ResolvedLattice::soundSpeed() const {
+  return latticeSpeed() / std::sqrt(3.0);
+}
 
 ResolvedLattice resolve(const LatticeDef& def) {
   ResolvedLattice r;
@@ -106,10 +108,9 @@ ResolvedLattice resolve(const LatticeDef& def) {
   for (int axis = 0; axis < 2; ++axis) {
     const auto a = def.sides[2 * axis].kind, b = def.sides[2 * axis + 1].kind;
     if ((a == SideKind::periodic) != (b == SideKind::periodic))
-      throw Error("VALUE WALLS",
-                  std::string(sideNames[2 * axis]) + " is " + sideKindNames[int(a)] + " but " +
-                      sideNames[2 * axis + 1] + " is " + sideKindNames[int(b)] +
-                      ": periodic sides come in pairs");
+      throw Error("VALUE WALLS", std::string(sideNames[2 * axis]) + " is " + sideKindNames[int(a)] +
+                                     " but " + sideNames[2 * axis + 1] + " is " +
+                                     sideKindNames[int(b)] + ": periodic sides come in pairs");
   }
   auto open = [&](int s) {
     return def.sides[s].kind == SideKind::velocity || def.sides[s].kind == SideKind::pressure;
@@ -128,9 +129,9 @@ ResolvedLattice resolve(const LatticeDef& def) {
     if (mach > maxBoundaryMach)
       throw Error("VALUE WALLS", std::string(sideNames[s]) + " velocity " +
                                      formatNumber(side.velocity.norm()) + " is Mach " +
-                                     formatNumber(mach) + " on this lattice (c = " +
-                                     formatNumber(r.latticeSpeed()) + "): must be below " +
-                                     formatNumber(maxBoundaryMach));
+                                     formatNumber(mach) +
+                                     " on this lattice (c = " + formatNumber(r.latticeSpeed()) +
+                                     "): must be below " + formatNumber(maxBoundaryMach));
     if (side.kind == SideKind::pressure) requirePositive(side.pressure, "-pressure");
   }
   return r;

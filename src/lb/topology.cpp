@@ -13,7 +13,9 @@ namespace {
 using d2q9::ex;
 using d2q9::ey;
 
-bool isWall(NodeKind k) { return k == NodeKind::noslip || k == NodeKind::slip; }
+bool isWall(NodeKind k) {
+  return k == NodeKind::noslip || k == NodeKind::slip;
+}
 bool holdsFluidKind(NodeKind k) {
   return k == NodeKind::fluid || k == NodeKind::velocity || k == NodeKind::pressure;
 }
@@ -34,12 +36,16 @@ class Classifier {
   Where at(int px, int py) const {
     int outside[2] = {-1, -1};  // side index per axis, or -1 inside
     if (px < 0 || px >= p_.nx) {
-      if (periodic(left)) px = (px + p_.nx) % p_.nx;
-      else outside[0] = px < 0 ? left : right;
+      if (periodic(left))
+        px = (px + p_.nx) % p_.nx;
+      else
+        outside[0] = px < 0 ? left : right;
     }
     if (py < 0 || py >= p_.ny) {
-      if (periodic(bottom)) py = (py + p_.ny) % p_.ny;
-      else outside[1] = py < 0 ? bottom : top;
+      if (periodic(bottom))
+        py = (py + p_.ny) % p_.ny;
+      else
+        outside[1] = py < 0 ? bottom : top;
     }
     if (outside[0] < 0 && outside[1] < 0) {
       const std::int64_t node = std::int64_t(py + 1) * (p_.nx + 2) + (px + 1);
@@ -53,9 +59,12 @@ class Classifier {
 
   NodeKind sideKind(int side) const {
     switch (p_.def.sides[side].kind) {
-      case SideKind::noslip: return NodeKind::noslip;
-      case SideKind::slip: return NodeKind::slip;
-      default: return NodeKind::open;
+      case SideKind::noslip:
+        return NodeKind::noslip;
+      case SideKind::slip:
+        return NodeKind::slip;
+      default:
+        return NodeKind::open;
     }
   }
 
@@ -153,10 +162,10 @@ void Lattice::rebuildTopology() {
       if (!holdsFluidKind(k)) continue;
       if (k != NodeKind::fluid) {
         const int s = (k == NodeKind::velocity || k == NodeKind::pressure)
-                          ? (i == 0 && zouHe[left] ? left
+                          ? (i == 0 && zouHe[left]         ? left
                              : i == nx - 1 && zouHe[right] ? right
-                             : j == 0 && zouHe[bottom] ? bottom
-                                                       : top)
+                             : j == 0 && zouHe[bottom]     ? bottom
+                                                           : top)
                           : 0;
         zouHe[s]->nodes.push_back(x);
       }

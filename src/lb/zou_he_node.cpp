@@ -12,10 +12,14 @@ using d2q9::Q;
 // Quarter turns that take the left side's frame onto the given side.
 int quarterTurns(int side) {
   switch (side) {
-    case left: return 0;
-    case bottom: return 1;
-    case right: return 2;
-    default: return 3;  // top
+    case left:
+      return 0;
+    case bottom:
+      return 1;
+    case right:
+      return 2;
+    default:
+      return 3;  // top
   }
 }
 

@@ -58,7 +58,8 @@ void Manager::setTimestep(double dt) {
 }
 
 void Manager::setThreads(int threads) {
-  if (threads < 1) throw Error("VALUE THREADS", "-threads must be >= 1, got " + std::to_string(threads));
+  if (threads < 1)
+    throw Error("VALUE THREADS", "-threads must be >= 1, got " + std::to_string(threads));
   threads_ = threads;
   if (lattice_) lattice_->setThreads(threads);
 }
@@ -68,8 +69,8 @@ void Manager::step() {
     try {
       lattice_->step(machStopLimit());
     } catch (const Error& e) {
-      throw Error(e.code(), "step " + std::to_string(steps_ + 1) + " (t = " +
-                                formatNumber(time_ + timestep()) + "): " + e.what());
+      throw Error(e.code(), "step " + std::to_string(steps_ + 1) +
+                                " (t = " + formatNumber(time_ + timestep()) + "): " + e.what());
     }
     if (!machWarned_ && lattice_->lastStepMach() > machWarnLimit()) {
       machWarned_ = true;

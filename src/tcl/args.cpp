@@ -24,7 +24,9 @@ int fail(Tcl_Interp* interp, const std::string& code, const std::string& message
   return TCL_ERROR;
 }
 
-int fail(Tcl_Interp* interp, const Error& error) { return fail(interp, error.code(), error.what()); }
+int fail(Tcl_Interp* interp, const Error& error) {
+  return fail(interp, error.code(), error.what());
+}
 
 bool getDouble(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, double& out) {
   if (Tcl_GetDoubleFromObj(interp, obj, &out) != TCL_OK) {
@@ -113,7 +115,9 @@ bool parseOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first
   return true;
 }
 
-Tcl_Obj* newDouble(double v) { return Tcl_NewDoubleObj(v); }
+Tcl_Obj* newDouble(double v) {
+  return Tcl_NewDoubleObj(v);
+}
 
 Tcl_Obj* newVec2(const Vec2& v) {
   Tcl_Obj* items[2] = {Tcl_NewDoubleObj(v.x()), Tcl_NewDoubleObj(v.y())};

@@ -12,8 +12,20 @@ using lb::LatticeDef;
 using lb::SideKind;
 
 enum Opt {
-  kOrigin, kSize, kCells, kSpacing, kViscosity, kDensity, kTau, kPeriodic, kWalls, kForcing,
-  kCollision, kForceScheme, kMagic, kOptionCount
+  kOrigin,
+  kSize,
+  kCells,
+  kSpacing,
+  kViscosity,
+  kDensity,
+  kTau,
+  kPeriodic,
+  kWalls,
+  kForcing,
+  kCollision,
+  kForceScheme,
+  kMagic,
+  kOptionCount
 };
 
 // Options are converted in this order, so -periodic is applied before -walls.
@@ -40,7 +52,9 @@ const char* const kForceSchemeNames[] = {"nodal", "guo", nullptr};
 const char* const kSideNames[] = {"left", "right", "bottom", "top", nullptr};
 const char* const kKindNames[] = {"periodic", "noslip", "slip", "velocity", "pressure", nullptr};
 
-Session& sessionOf(ClientData data) { return *static_cast<Session*>(data); }
+Session& sessionOf(ClientData data) {
+  return *static_cast<Session*>(data);
+}
 
 bool parseWallSpec(Tcl_Interp* interp, Tcl_Obj* spec, lb::SideDef& side) {
   int n = 0;
@@ -98,8 +112,10 @@ bool parsePeriodic(Tcl_Interp* interp, Tcl_Obj* value, LatticeDef& def) {
   }
   for (int axis = 0; axis < 2; ++axis)
     for (int side : {2 * axis, 2 * axis + 1}) {
-      if (flags[axis]) def.sides[side] = lb::SideDef{SideKind::periodic};
-      else if (def.sides[side].kind == SideKind::periodic) def.sides[side] = lb::SideDef{};
+      if (flags[axis])
+        def.sides[side] = lb::SideDef{SideKind::periodic};
+      else if (def.sides[side].kind == SideKind::periodic)
+        def.sides[side] = lb::SideDef{};
     }
   return true;
 }
@@ -122,40 +138,52 @@ bool applyOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first
     int index = 0;
     bool ok = true;
     switch (k) {
-      case kOrigin: ok = getVec2(interp, v, name, def.origin); break;
-      case kSize: ok = getVec2(interp, v, name, def.size); break;
+      case kOrigin:
+        ok = getVec2(interp, v, name, def.origin);
+        break;
+      case kSize:
+        ok = getVec2(interp, v, name, def.size);
+        break;
       case kCells:
         ok = getInt(interp, v, name, def.cells);
         if (ok && def.cells < 1)
-          return reject(interp, "VALUE CELLS", "-cells must be >= 1, got " +
-                                                 std::to_string(def.cells));
+          return reject(interp, "VALUE CELLS",
+                        "-cells must be >= 1, got " + std::to_string(def.cells));
         def.spacing = 0;
         break;
       case kSpacing:
         ok = getDouble(interp, v, name, def.spacing);
         if (ok && !(def.spacing > 0))
-          return reject(interp, "VALUE SPACING", "-spacing must be > 0, got " +
-                                                   formatNumber(def.spacing));
+          return reject(interp, "VALUE SPACING",
+                        "-spacing must be > 0, got " + formatNumber(def.spacing));
         def.cells = 0;
         break;
       case kViscosity:
         ok = getDouble(interp, v, name, d);
         if (ok && !(d > 0))
           return reject(interp, "VALUE VISCOSITY",
-                      "-viscosity must be > 0, got " + formatNumber(d));
+                        "-viscosity must be > 0, got " + formatNumber(d));
         def.viscosity = d;
         break;
-      case kDensity: ok = getDouble(interp, v, name, def.density); break;
+      case kDensity:
+        ok = getDouble(interp, v, name, def.density);
+        break;
       case kTau:
         ok = getDouble(interp, v, name, d);
         if (ok && !(d > 0.5))
           return reject(interp, "VALUE TAU",
-                      "tau " + formatNumber(d) + " is unstable: must exceed 0.5");
+                        "tau " + formatNumber(d) + " is unstable: must exceed 0.5");
         def.tau = d;
         break;
-      case kPeriodic: ok = parsePeriodic(interp, v, def); break;
-      case kWalls: ok = parseWalls(interp, v, def); break;
-      case kForcing: ok = getVec2(interp, v, name, def.forcing); break;
+      case kPeriodic:
+        ok = parsePeriodic(interp, v, def);
+        break;
+      case kWalls:
+        ok = parseWalls(interp, v, def);
+        break;
+      case kForcing:
+        ok = getVec2(interp, v, name, def.forcing);
+        break;
       case kCollision:
         ok = getChoice(interp, v, "collision", kCollisionNames, index);
         def.collision = static_cast<lb::Collision>(index);
@@ -164,7 +192,9 @@ bool applyOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first
         ok = getChoice(interp, v, "force scheme", kForceSchemeNames, index);
         def.forceScheme = static_cast<lb::ForceScheme>(index);
         break;
-      case kMagic: ok = getDouble(interp, v, name, def.magic); break;
+      case kMagic:
+        ok = getDouble(interp, v, name, def.magic);
+        break;
     }
     if (!ok) {
       if (k == kPeriodic || k == kWalls || k == kCollision || k == kForceScheme) {
@@ -183,7 +213,8 @@ Tcl_Obj* wallsValue(const LatticeDef& def) {
     const lb::SideDef& side = def.sides[s];
     Tcl_Obj* spec = Tcl_NewListObj(0, nullptr);
     Tcl_ListObjAppendElement(nullptr, spec, Tcl_NewStringObj(kKindNames[int(side.kind)], -1));
-    if (side.kind == SideKind::velocity || (side.kind == SideKind::noslip && !side.velocity.isZero()))
+    if (side.kind == SideKind::velocity ||
+        (side.kind == SideKind::noslip && !side.velocity.isZero()))
       Tcl_ListObjAppendElement(nullptr, spec, newVec2(side.velocity));
     if (side.kind == SideKind::pressure)
       Tcl_ListObjAppendElement(nullptr, spec, newDouble(side.pressure));
@@ -195,31 +226,42 @@ Tcl_Obj* wallsValue(const LatticeDef& def) {
 Tcl_Obj* optionValue(const lb::ResolvedLattice& p, int k) {
   const LatticeDef& def = p.def;
   switch (k) {
-    case kOrigin: return newVec2(def.origin);
-    case kSize: return newVec2(def.size);
-    case kCells: return Tcl_NewIntObj(p.nx);
-    case kSpacing: return newDouble(p.h);
-    case kViscosity: return newDouble(p.viscosity);
-    case kDensity: return newDouble(def.density);
-    case kTau: return newDouble(p.tau);
+    case kOrigin:
+      return newVec2(def.origin);
+    case kSize:
+      return newVec2(def.size);
+    case kCells:
+      return Tcl_NewIntObj(p.nx);
+    case kSpacing:
+      return newDouble(p.h);
+    case kViscosity:
+      return newDouble(p.viscosity);
+    case kDensity:
+      return newDouble(def.density);
+    case kTau:
+      return newDouble(p.tau);
     case kPeriodic: {
       Tcl_Obj* flags[2] = {Tcl_NewBooleanObj(def.sides[lb::left].kind == SideKind::periodic),
                            Tcl_NewBooleanObj(def.sides[lb::bottom].kind == SideKind::periodic)};
       return Tcl_NewListObj(2, flags);
     }
-    case kWalls: return wallsValue(def);
-    case kForcing: return newVec2(def.forcing);
-    case kCollision: return Tcl_NewStringObj(kCollisionNames[int(def.collision)], -1);
-    case kForceScheme: return Tcl_NewStringObj(kForceSchemeNames[int(def.forceScheme)], -1);
-    default: return newDouble(def.magic);
+    case kWalls:
+      return wallsValue(def);
+    case kForcing:
+      return newVec2(def.forcing);
+    case kCollision:
+      return Tcl_NewStringObj(kCollisionNames[int(def.collision)], -1);
+    case kForceScheme:
+      return Tcl_NewStringObj(kForceSchemeNames[int(def.forceScheme)], -1);
+    default:
+      return newDouble(def.magic);
   }
 }
 
 int LatticeCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   Session& s = sessionOf(data);
   if (objc < 2 || objc % 2 == 0) {
-    Tcl_WrongNumArgs(interp, 1, objv,
-                     "-size {Lx Ly} (-cells NX | -spacing h) ?-option value ...?");
+    Tcl_WrongNumArgs(interp, 1, objv, "-size {Lx Ly} (-cells NX | -spacing h) ?-option value ...?");
     return TCL_ERROR;
   }
   LatticeDef def;
@@ -298,7 +340,8 @@ int LatticeInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
     const lb::Lattice& l = s.manager.lattice();
     const lb::ResolvedLattice& p = l.params();
     Tcl_Obj* kinds = Tcl_NewDictObj();
-    for (const auto& k : l.kinds()) dictPut(kinds, k->name(), Tcl_NewWideIntObj(Tcl_WideInt(k->count())));
+    for (const auto& k : l.kinds())
+      dictPut(kinds, k->name(), Tcl_NewWideIntObj(Tcl_WideInt(k->count())));
     Tcl_SetObjResult(
         interp,
         newDict({{"nx", Tcl_NewIntObj(p.nx)},
@@ -341,14 +384,15 @@ int LatticeProbe(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
     const lb::Lattice& l = s.manager.lattice();
     const auto node = l.nodeAt(x);
     if (!node)
-      return fail(interp, "VALUE POINT",
-                  "point {" + formatNumber(x.x()) + " " + formatNumber(x.y()) +
-                      "} is outside the lattice");
+      return fail(
+          interp, "VALUE POINT",
+          "point {" + formatNumber(x.x()) + " " + formatNumber(x.y()) + "} is outside the lattice");
     const auto [i, j] = *node;
-    static const char* const kindNames[] = {"fluid", "noslip", "slip",    "solid",
+    static const char* const kindNames[] = {"fluid",    "noslip",   "slip", "solid",
                                             "velocity", "pressure", "open"};
     const lb::NodeKind k = l.kind(i, j);
-    const bool solid = k == lb::NodeKind::noslip || k == lb::NodeKind::slip || k == lb::NodeKind::solid;
+    const bool solid =
+        k == lb::NodeKind::noslip || k == lb::NodeKind::slip || k == lb::NodeKind::solid;
     Tcl_Obj* ij[2] = {Tcl_NewIntObj(i), Tcl_NewIntObj(j)};
     Tcl_SetObjResult(interp, newDict({{"density", newDouble(l.density(i, j))},
                                       {"pressure", newDouble(l.pressure(i, j))},

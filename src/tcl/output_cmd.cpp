@@ -6,7 +6,9 @@
 namespace sf::tcl {
 namespace {
 
-Session& sessionOf(ClientData data) { return *static_cast<Session*>(data); }
+Session& sessionOf(ClientData data) {
+  return *static_cast<Session*>(data);
+}
 
 int OutputVtk(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 2) {
@@ -33,12 +35,12 @@ int OutputHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) 
     Tcl_WrongNumArgs(interp, 1, objv, "");
     return TCL_ERROR;
   }
-  Tcl_SetObjResult(interp, newString(helpText(
-                               "output",
-                               {"vtk PREFIX   -> files written: PREFIX.vti (lattice: density, "
-                                "pressure, velocity, kind)",
-                                "help"},
-                               nullptr)));
+  Tcl_SetObjResult(
+      interp, newString(helpText("output",
+                                 {"vtk PREFIX   -> files written: PREFIX.vti (lattice: density, "
+                                  "pressure, velocity, kind)",
+                                  "help"},
+                                 nullptr)));
   return TCL_OK;
 }
 

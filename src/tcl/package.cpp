@@ -4,7 +4,9 @@
 namespace sf::tcl {
 namespace {
 
-void deleteSession(ClientData data, Tcl_Interp*) { delete static_cast<Session*>(data); }
+void deleteSession(ClientData data, Tcl_Interp*) {
+  delete static_cast<Session*>(data);
+}
 
 // Warnings go through a procedure the user (or the GUI) may redefine.
 constexpr const char* kWarnProc = R"tcl(

@@ -7,7 +7,9 @@
 namespace sf::tcl {
 namespace {
 
-Session& sessionOf(ClientData data) { return *static_cast<Session*>(data); }
+Session& sessionOf(ClientData data) {
+  return *static_cast<Session*>(data);
+}
 
 const OptionSpec kRunOptions[] = {
     {"-every", "K script", "evaluate script every K steps; break stops the run"},
@@ -37,7 +39,8 @@ int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc == 5) {
     if (optionIndex(interp, objv[2], kRunOptions) < 0) return TCL_ERROR;
     if (!getInt(interp, objv[3], "-every", every)) return TCL_ERROR;
-    if (every < 1) return fail(interp, "VALUE EVERY", "-every must be >= 1, got " + std::to_string(every));
+    if (every < 1)
+      return fail(interp, "VALUE EVERY", "-every must be >= 1, got " + std::to_string(every));
     script = objv[4];
   }
   double computeSeconds = 0.0;
@@ -47,7 +50,8 @@ int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     if (advance(s) != TCL_OK) return TCL_ERROR;
     computeSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (s.manager.hasLattice())  // the rate so far, so that -every scripts can report it
-      s.manager.setMlups(double(s.manager.lattice().nodes()) * double(done + 1) / computeSeconds / 1e6);
+      s.manager.setMlups(double(s.manager.lattice().nodes()) * double(done + 1) / computeSeconds /
+                         1e6);
     if (script && (done + 1) % every == 0) {
       const int code = Tcl_EvalObjEx(interp, script, TCL_EVAL_GLOBAL);
       if (code == TCL_BREAK) {
@@ -55,8 +59,8 @@ int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
         break;
       }
       if (code == TCL_ERROR) {
-        const std::string where = "\n    (in -every script after step " +
-                                  std::to_string(s.manager.stepCount()) + ")";
+        const std::string where =
+            "\n    (in -every script after step " + std::to_string(s.manager.stepCount()) + ")";
         Tcl_AddErrorInfo(interp, where.c_str());
         return TCL_ERROR;
       }

@@ -15,7 +15,9 @@ const OptionSpec kOptions[] = {
     {"-threads", "n", "threads for the step (results do not depend on it)"},
     {nullptr, nullptr, nullptr}};
 
-Session& sessionOf(ClientData data) { return *static_cast<Session*>(data); }
+Session& sessionOf(ClientData data) {
+  return *static_cast<Session*>(data);
+}
 
 Tcl_Obj* optionValue(const sim::Manager& m, int k) {
   if (k == kTimestep) return newDouble(m.timestep());
@@ -50,13 +52,16 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
         if (k == kTimestep) {
           double dt = 0;
           if (!getDouble(interp, v, "-timestep", dt)) return false;
-          if (!(dt > 0)) return reject(interp, "VALUE TIMESTEP", "-timestep must be > 0, got " + formatNumber(dt));
+          if (!(dt > 0))
+            return reject(interp, "VALUE TIMESTEP",
+                          "-timestep must be > 0, got " + formatNumber(dt));
           timestep = dt;
         } else {
           int n = 0;
           if (!getInt(interp, v, "-threads", n)) return false;
           if (n < 1 || n > 1024)
-            return reject(interp, "VALUE THREADS", "-threads must be 1 to 1024, got " + std::to_string(n));
+            return reject(interp, "VALUE THREADS",
+                          "-threads must be 1 to 1024, got " + std::to_string(n));
           threads = n;
         }
         return true;
@@ -116,22 +121,23 @@ int SimHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     Tcl_WrongNumArgs(interp, 1, objv, "");
     return TCL_ERROR;
   }
-  Tcl_SetObjResult(interp, newString(helpText(
-                               "sim",
-                               {"configure ?-option value ...?", "cget -option",
-                                "info    -> dict time step timestep tau mach elements contacts "
-                                "bonds broken nodes mlups stable",
-                                "help"},
-                               kOptions)));
+  Tcl_SetObjResult(
+      interp, newString(helpText("sim",
+                                 {"configure ?-option value ...?", "cget -option",
+                                  "info    -> dict time step timestep tau mach elements contacts "
+                                  "bonds broken nodes mlups stable",
+                                  "help"},
+                                 kOptions)));
   return TCL_OK;
 }
 
 }  // namespace
 
 void registerSimCommands(Tcl_Interp* interp, Session* session) {
-  makeEnsemble(interp, "::sf::sim",
-               {{"configure", SimConfigure}, {"cget", SimCget}, {"info", SimInfo}, {"help", SimHelp}},
-               session);
+  makeEnsemble(
+      interp, "::sf::sim",
+      {{"configure", SimConfigure}, {"cget", SimCget}, {"info", SimInfo}, {"help", SimHelp}},
+      session);
 }
 
 }  // namespace sf::tcl

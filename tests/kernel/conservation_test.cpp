@@ -5,8 +5,8 @@
 #include <cstring>
 #include <random>
 
-#include "sandflow/core/error.hpp"
 #include "lattice_helpers.hpp"
+#include "sandflow/core/error.hpp"
 
 namespace sf {
 namespace {
@@ -96,7 +96,8 @@ TEST(Determinism, OneAndTwoThreadsGiveIdenticalPopulations) {
       result[threads - 1].assign(f, f + lattice.populationCount());
     }
     ASSERT_EQ(result[0].size(), result[1].size());
-    EXPECT_EQ(0, std::memcmp(result[0].data(), result[1].data(), result[0].size() * sizeof(double)));
+    EXPECT_EQ(0,
+              std::memcmp(result[0].data(), result[1].data(), result[0].size() * sizeof(double)));
   }
 }
 

@@ -13,7 +13,8 @@ namespace {
 
 constexpr int ex[9] = {0, 1, 1, 0, -1, -1, -1, 0, 1};
 constexpr int ey[9] = {0, 0, 1, 1, 1, 0, -1, -1, -1};
-constexpr double w[9] = {4. / 9, 1. / 9, 1. / 36, 1. / 9, 1. / 36, 1. / 9, 1. / 36, 1. / 9, 1. / 36};
+constexpr double w[9] = {4. / 9, 1. / 9,  1. / 36, 1. / 9, 1. / 36,
+                         1. / 9, 1. / 36, 1. / 9,  1. / 36};
 constexpr int opp[9] = {0, 5, 6, 7, 8, 1, 2, 3, 4};
 
 struct Reference {
@@ -84,9 +85,14 @@ TEST(ReferenceKernel, FastKernelAgreesWithCellwiseReference) {
         rho = 1 + u(rng);
         v = Vec2(u(rng), u(rng)) * lattice.params().latticeSpeed();
       });
-      Reference ref{nx, ny, std::vector<double>(nx * ny * 9),
+      Reference ref{nx,
+                    ny,
+                    std::vector<double>(nx * ny * 9),
                     [](int i, int j) { return i >= 5 && i <= 8 && j >= 4 && j <= 6; },
-                    c, s, lattice.params().tau, def.magic,
+                    c,
+                    s,
+                    lattice.params().tau,
+                    def.magic,
                     lattice.params().forceToLattice(def.forcing.x()),
                     lattice.params().forceToLattice(def.forcing.y())};
       for (int j = 0; j < ny; ++j)

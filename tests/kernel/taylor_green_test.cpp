@@ -24,8 +24,8 @@ double taylorGreenError(int n, lb::Collision collision) {
   lb::Lattice lattice(lb::resolve(def));
   const double cs2 = std::pow(lattice.params().soundSpeed(), 2);
   lattice.initialize([&](const Vec2& x, double& rho, Vec2& u) {
-    u = u0 * Vec2(-std::cos(k * x.x()) * std::sin(k * x.y()),
-                  std::sin(k * x.x()) * std::cos(k * x.y()));
+    u = u0 *
+        Vec2(-std::cos(k * x.x()) * std::sin(k * x.y()), std::sin(k * x.x()) * std::cos(k * x.y()));
     const double p = -rho0 * u0 * u0 / 4 * (std::cos(2 * k * x.x()) + std::cos(2 * k * x.y()));
     rho = rho0 + p / cs2;
   });

@@ -28,9 +28,8 @@ TEST(ZouHe, PressureDrivenChannelIsPoiseuille) {
   // Pressure nodes sit on the first and last node columns, (nx - 1) h apart.
   const double gradient = cs2 * drho / (nx - 1);
   const double nu = *def.viscosity, H = ny;
-  const double err = test::profileError(lattice, nx / 2, [&](double y) {
-    return gradient / (2 * rho0 * nu) * y * (H - y);
-  });
+  const double err = test::profileError(
+      lattice, nx / 2, [&](double y) { return gradient / (2 * rho0 * nu) * y * (H - y); });
   EXPECT_LE(err, 1e-3);
   EXPECT_NEAR(lattice.density(0, ny / 2), rho0 + drho / 2, 1e-14);
 }
@@ -56,9 +55,8 @@ TEST(ZouHe, UniformInletDevelopsPoiseuilleWithTheSameFlux) {
   for (int j = 0; j < ny; ++j) inflow += lattice.density(0, j) * U;
   EXPECT_NEAR(flux / inflow, 1.0, 1e-4);
   const double H = ny, mean = flux / (ny * lattice.density(i, ny / 2));
-  const double err = test::profileError(lattice, i, [&](double y) {
-    return 6 * mean * y * (H - y) / (H * H);
-  });
+  const double err =
+      test::profileError(lattice, i, [&](double y) { return 6 * mean * y * (H - y) / (H * H); });
   EXPECT_LE(err, 1e-3);
 }
 

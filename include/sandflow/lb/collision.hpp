@@ -18,8 +18,8 @@ enum class Collision { bgk, trt };
 enum class ForceScheme { nodal, guo };
 
 struct CollisionParams {
-  double omegaPlus = 1.0;   // 1/tau
-  double omegaMinus = 1.0;  // TRT only
+  double omegaPlus = 1.0;     // 1/tau
+  double omegaMinus = 1.0;    // TRT only
   double fx = 0.0, fy = 0.0;  // force density per node, lattice units
 };
 

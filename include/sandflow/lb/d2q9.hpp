@@ -8,8 +8,8 @@ namespace sf::lb::d2q9 {
 inline constexpr int Q = 9;
 inline constexpr std::array<int, Q> ex = {0, 1, 1, 0, -1, -1, -1, 0, 1};
 inline constexpr std::array<int, Q> ey = {0, 0, 1, 1, 1, 0, -1, -1, -1};
-inline constexpr std::array<double, Q> w = {4.0 / 9,  1.0 / 9,  1.0 / 36, 1.0 / 9, 1.0 / 36,
-                                            1.0 / 9,  1.0 / 36, 1.0 / 9,  1.0 / 36};
+inline constexpr std::array<double, Q> w = {4.0 / 9, 1.0 / 9,  1.0 / 36, 1.0 / 9, 1.0 / 36,
+                                            1.0 / 9, 1.0 / 36, 1.0 / 9,  1.0 / 36};
 // Opposite direction: 1<->5, 2<->6, 3<->7, 4<->8.
 inline constexpr std::array<int, Q> opposite = {0, 5, 6, 7, 8, 1, 2, 3, 4};
 

@@ -23,9 +23,9 @@ struct RectObstacle {
 
 struct ObstacleInfo {
   RectObstacle shape;
-  std::size_t nodes = 0;       // solid nodes it covers
-  Vec2 force = Vec2::Zero();   // force per unit thickness the fluid exerts on it
-  double torque = 0.0;         // about the rectangle's centre
+  std::size_t nodes = 0;      // solid nodes it covers
+  Vec2 force = Vec2::Zero();  // force per unit thickness the fluid exerts on it
+  double torque = 0.0;        // about the rectangle's centre
 };
 
 class Lattice {
@@ -91,8 +91,8 @@ class Lattice {
 
   ResolvedLattice p_;
   std::ptrdiff_t rowStride_ = 0, stride_ = 0;
-  double* f_ = nullptr;  // current populations, 9 * stride_
-  double* g_ = nullptr;  // next populations
+  double* f_ = nullptr;         // current populations, 9 * stride_
+  double* g_ = nullptr;         // next populations
   std::vector<NodeKind> kind_;  // per padded node
   std::vector<std::unique_ptr<Node>> kinds_;
   std::vector<RectObstacle> obstacles_;

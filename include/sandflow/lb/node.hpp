@@ -75,9 +75,9 @@ class FluidNode final : public Node {
 // Slot copies f[dst] = f[src] + add, evaluated after the swap. One form serves
 // periodic images, (moving) bounce-back and specular reflection.
 struct Link {
-  std::int64_t dst;  // direction * stride + node, a slot a fluid node pulls from
-  std::int64_t src;  // the post-collision slot it takes its value from
-  double add;        // moving-wall momentum term, lattice units
+  std::int64_t dst;    // direction * stride + node, a slot a fluid node pulls from
+  std::int64_t src;    // the post-collision slot it takes its value from
+  double add;          // moving-wall momentum term, lattice units
   std::int32_t owner;  // obstacle id, or -1 - side for the domain's sides
   std::int32_t node;   // the fluid node that pulls (for forces)
 };
@@ -116,8 +116,8 @@ class ZouHeNode final : public Node {
  public:
   int side = 0;  // sf::lb::Side
   bool pressure = false;
-  double density = 1.0;               // pressure sides
-  Vec2 velocity = Vec2::Zero();       // velocity sides, lattice units
+  double density = 1.0;          // pressure sides
+  Vec2 velocity = Vec2::Zero();  // velocity sides, lattice units
   std::vector<std::int64_t> nodes;
   const char* name() const override { return pressure ? "pressure" : "velocity"; }
   std::size_t count() const override { return nodes.size(); }
