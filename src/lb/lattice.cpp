@@ -104,6 +104,17 @@ StepStats Lattice::step(double machLimit) {
   return stats;
 }
 
+void Lattice::moments(const double* f, std::int64_t x, double& rho, double& jx,
+                      double& jy) const {
+  rho = jx = jy = 0;
+  for (int d = 0; d < 9; ++d) {
+    const double v = f[d * stride_ + x];
+    rho += v;
+    jx += d2q9::ex[d] * v;
+    jy += d2q9::ey[d] * v;
+  }
+}
+
 void Lattice::reportInstability(const StepStats& stats, double machLimit) const {
   // Find the culprit in the rejected new state (g_); the current state stays.
   std::int64_t worst = -1;
@@ -113,13 +124,8 @@ void Lattice::reportInstability(const StepStats& stats, double machLimit) const 
     for (int i = 0; i < p_.nx; ++i) {
       const std::int64_t x = index(i, j);
       if (!holdsFluid(x)) continue;
-      double rho = 0, jx = 0, jy = 0;
-      for (int d = 0; d < 9; ++d) {
-        const double v = g_[d * stride_ + x];
-        rho += v;
-        jx += d2q9::ex[d] * v;
-        jy += d2q9::ey[d] * v;
-      }
+      double rho, jx, jy;
+      moments(g_, x, rho, jx, jy);
       const double u2 = (jx * jx + jy * jy) / (rho * rho);
       if (nan && !std::isfinite(rho + jx + jy)) {
         worst = x;
@@ -140,13 +146,8 @@ void Lattice::reportInstability(const StepStats& stats, double machLimit) const 
 // Pre-collision velocity (lattice units) from the stored post-collision state:
 // collision adds F to the first moment, and Guo's velocity carries F/2 back.
 Vec2 Lattice::latticeVelocity(std::int64_t x) const {
-  double rho = 0, jx = 0, jy = 0;
-  for (int d = 0; d < 9; ++d) {
-    const double v = f_[d * stride_ + x];
-    rho += v;
-    jx += d2q9::ex[d] * v;
-    jy += d2q9::ey[d] * v;
-  }
+  double rho, jx, jy;
+  moments(f_, x, rho, jx, jy);
   const double back = p_.def.forceScheme == ForceScheme::guo ? 0.5 : 1.0;
   const Vec2 F(p_.forceToLattice(p_.def.forcing.x()), p_.forceToLattice(p_.def.forcing.y()));
   return (Vec2(jx, jy) - back * F) / rho;

@@ -86,7 +86,9 @@ class Lattice {
   StepContext context() const;
   bool holdsFluid(std::int64_t node) const;
   void setNodeState(std::int64_t node, double rho, const Vec2& latticeU);
-  Vec2 latticeVelocity(std::int64_t node) const;  // pre-collision velocity, lattice units
+  Vec2 latticeVelocity(std::int64_t node) const;
+  // Density and first moment of one node of the population array `f`.
+  void moments(const double* f, std::int64_t node, double& rho, double& jx, double& jy) const;  // pre-collision velocity, lattice units
   [[noreturn]] void reportInstability(const StepStats& stats, double machLimit) const;
 
   ResolvedLattice p_;
