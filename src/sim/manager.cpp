@@ -3,12 +3,15 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "sandflow/core/error.hpp"
 
 namespace sf::sim {
 
-Manager::Manager() : threads_(std::max(1, omp_get_num_procs())) {}
+Manager::Manager() : threads_(std::max(1, omp_get_num_procs())) {
+  assembly_.threads = threads_;
+}
 
 lb::Lattice& Manager::lattice() {
   if (!lattice_) throw Error("LOOKUP LATTICE", "there is no lattice: use \"lattice create\"");
@@ -41,12 +44,28 @@ void Manager::deleteLattice() {
 
 double Manager::timestep() const {
   if (lattice_) return lattice_->params().dt;
-  return fixedTimestep_.value_or(0.0);
+  if (fixedTimestep_) return *fixedTimestep_;
+  const double critical = assembly_.criticalTimestep();
+  return std::isfinite(critical) ? critical / 10 : 0.0;
+}
+
+void Manager::setGravity(const Vec2& g) {
+  if (!g.allFinite()) throw Error("VALUE GRAVITY", "-gravity must be finite");
+  gravity_ = g;
+}
+
+void Manager::checkDemTimestep(double dt) const {
+  const double critical = assembly_.criticalTimestep();
+  if (dt > critical)
+    throw Error("VALUE TIMESTEP",
+                "timestep " + formatNumber(dt) + " exceeds the elements' critical timestep " +
+                    formatNumber(critical) + " (2 sqrt(m/k), lightest element, stiffest material)");
 }
 
 void Manager::setTimestep(double dt) {
   if (!(dt > 0) || !std::isfinite(dt))
     throw Error("VALUE TIMESTEP", "-timestep must be > 0, got " + formatNumber(dt));
+  checkDemTimestep(dt);
   if (lattice_) {
     lb::LatticeDef def = lattice_->params().def;
     def.viscosity = lattice_->params().viscosity;
@@ -65,6 +84,14 @@ void Manager::setThreads(int threads) {
 }
 
 void Manager::step() {
+  const double dt = timestep();
+  if (!assembly_.empty()) {
+    if (!(dt > 0))
+      throw Error(
+          "VALUE TIMESTEP",
+          "no timestep: the elements are all held; set one with \"sim configure -timestep\"");
+    checkDemTimestep(dt);
+  }
   if (lattice_) {
     try {
       lattice_->step(machStopLimit());
@@ -79,12 +106,21 @@ void Manager::step() {
            ": the flow is no longer nearly incompressible (reduce the timestep or the forcing)");
     }
   }
-  time_ += timestep();
+  try {
+    assembly_.step(dt, gravity_);
+  } catch (const Error& e) {
+    throw Error(e.code(), "step " + std::to_string(steps_ + 1) +
+                              " (t = " + formatNumber(time_ + dt) + "): " + e.what());
+  }
+  time_ += dt;
   ++steps_;
 }
 
 void Manager::reset() {
   lattice_.reset();
+  assembly_ = dem::Assembly();
+  assembly_.threads = threads_;
+  gravity_ = Vec2::Zero();
   fixedTimestep_.reset();
   time_ = 0.0;
   steps_ = 0;

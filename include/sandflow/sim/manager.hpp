@@ -1,11 +1,13 @@
 #pragma once
-// The Manager owns what a scene holds -- for now an optional lattice -- and the
-// clock, and runs the step with only the passes the scene needs.
+// The Manager owns what a scene holds -- an optional lattice and the discrete
+// elements -- and the clock, and runs the step with only the passes the scene
+// needs: no lattice, no fluid pass; no elements, no DEM pass.
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "sandflow/dem/assembly.hpp"
 #include "sandflow/lb/lattice.hpp"
 
 namespace sf::sim {
@@ -22,7 +24,14 @@ class Manager {
   void reconfigureLattice(const lb::LatticeDef& def);
   void deleteLattice();
 
-  // Timestep: derived from the lattice, or fixed by the user (then tau follows).
+  // Discrete elements (always present; empty costs nothing).
+  dem::Assembly& assembly() { return assembly_; }
+  const dem::Assembly& assembly() const { return assembly_; }
+  Vec2 gravity() const { return gravity_; }
+  void setGravity(const Vec2& g);
+
+  // Timestep: the lattice's, or fixed by the user (then tau follows), or for
+  // elements alone a tenth of their critical step. 0 when nothing sets one.
   double timestep() const;
   bool timestepFixed() const { return fixedTimestep_.has_value(); }
   void setTimestep(double dt);
@@ -50,7 +59,11 @@ class Manager {
  private:
   void warn(const std::string& message);
 
+  void checkDemTimestep(double dt) const;
+
   std::unique_ptr<lb::Lattice> lattice_;
+  dem::Assembly assembly_;
+  Vec2 gravity_ = Vec2::Zero();
   std::optional<double> fixedTimestep_;
   int threads_ = 1;
   double time_ = 0.0;

@@ -1,0 +1,97 @@
+#pragma once
+// The discrete elements of a scene: bodies, materials, contacts, and the DEM
+// step (contact detection, contact forces, integration).
+#include <limits>
+#include <vector>
+
+#include "sandflow/dem/bodies.hpp"
+#include "sandflow/dem/dess.hpp"
+#include "sandflow/dem/material.hpp"
+#include "sandflow/dem/narrow_phase.hpp"
+
+namespace sf::dem {
+
+enum class Integrator { central = 0, euler = 1, verlet = 2 };
+inline constexpr const char* integratorNames[] = {"central", "euler", "verlet"};
+
+struct ElementDef {
+  std::unique_ptr<Shape> shape;
+  int material = 0;
+  Vec2 x = Vec2::Zero();
+  double angle = 0.0;
+  Vec2 v = Vec2::Zero();
+  double w = 0.0;
+  std::uint8_t hold = 0;
+  Vec2 force = Vec2::Zero();  // applied force and torque
+  double torque = 0.0;
+  Vec2 acceleration = Vec2::Zero();  // a body acceleration of its own
+  int id = -1;                       // < 0: the next free id
+};
+
+// A candidate pair from the broad phase and, while it touches, its contact.
+struct Contact {
+  int a, b;                   // slots, a < b
+  int idA, idB;               // element ids (stable across deletions)
+  Vec2 shear = Vec2::Zero();  // tangential spring force on b (history)
+  bool touching = false;
+  Vec2 normal = Vec2::Zero(), point = Vec2::Zero();
+  double overlap = 0.0;
+  Vec2 force = Vec2::Zero();  // total contact force on b (on a: the opposite)
+};
+
+struct StepTimes {
+  double sort = 0, narrow = 0, integrate = 0;
+};
+
+class Assembly {
+ public:
+  MaterialTable& materials() { return materials_; }
+  const MaterialTable& materials() const { return materials_; }
+
+  int add(ElementDef def);  // validated; returns the id
+  void remove(int id);
+  int nextId() const;
+  int slot(int id) const;  // throws if no such element
+  bool empty() const { return bodies_.size() == 0; }
+  Bodies& bodies() { return bodies_; }
+  const Bodies& bodies() const { return bodies_; }
+  // Recomputes mass and inertia of a slot after its shape or material changed.
+  void updateMass(int slot);
+  void touched() { dess_.reset(), pairsValid_ = false; }  // geometry changed by hand
+
+  // One step. Throws sf::Error ("UNSTABLE ...") before changing anything when a
+  // contact overlaps beyond `maxOverlap` of the smaller element or a force is
+  // not finite.
+  void step(double dt, const Vec2& gravity);
+
+  // 2 sqrt(m/k) for the lightest free element and the stiffest material in use.
+  double criticalTimestep() const;
+  Integrator integrator = Integrator::central;
+  double maxOverlap = 0.5;
+  int threads = 1;
+
+  const std::vector<Contact>& contacts() const { return contacts_; }
+  std::size_t touchingCount() const;
+  double kineticEnergy() const;
+  Vec2 momentum() const;
+  const StepTimes& times() const { return times_; }
+  long long broadPhaseBuilds() const { return builds_; }
+
+ private:
+  void computeForces(double dt, const Vec2& gravity, bool commit);
+  void updatePairs();
+  void integrate(double dt);
+
+  MaterialTable materials_;
+  Bodies bodies_;
+  Dess dess_;
+  std::vector<Contact> contacts_;
+  std::vector<Vec2> builtAt_;
+  std::vector<double> builtAngle_;
+  bool pairsValid_ = false;
+  double skin_ = 0.0;
+  long long builds_ = 0;
+  StepTimes times_;
+};
+
+}  // namespace sf::dem

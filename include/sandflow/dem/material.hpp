@@ -1,0 +1,50 @@
+#pragma once
+// Materials and the contact parameters of a pair of them.
+#include <string>
+#include <vector>
+
+namespace sf::dem {
+
+struct Material {
+  std::string name;
+  double density = 2650.0;
+  double kn = 1e5;           // normal contact stiffness (force per overlap, per unit thickness)
+  double ks = 1e5;           // tangential stiffness
+  double friction = 0.5;     // Coulomb coefficient
+  double restitution = 0.5;  // target normal restitution (sets the damping ratio) ...
+  double damping = -1.0;     // ... or a fixed normal damping coefficient when >= 0
+  double bondStiffness = 1e5;
+  double bondStrength = 1e3;
+};
+
+// Throws sf::Error naming the option when a value is out of range.
+void validate(const Material& m);
+
+// Normal damping ratio zeta for a restitution coefficient e (physics.md §4):
+// zeta = -ln e / sqrt(pi^2 + ln^2 e); e = 0 gives critical damping.
+double dampingRatio(double restitution);
+
+// Parameters of the contact between two materials: stiffnesses combine in
+// series scaled so that equal materials keep their own value (2 k1 k2/(k1+k2)),
+// friction takes the smaller, damping ratios the mean.
+struct PairLaw {
+  double kn, ks, friction, zeta, damping;  // damping < 0: use zeta
+};
+PairLaw combine(const Material& a, const Material& b);
+
+class MaterialTable {
+ public:
+  MaterialTable();                           // holds "default"
+  int find(const std::string& name) const;   // -1 if none
+  int index(const std::string& name) const;  // throws if none
+  const Material& operator[](int i) const { return materials_[i]; }
+  int add(const Material& m);              // throws if the name is taken or invalid
+  void replace(int i, const Material& m);  // validated
+  std::vector<std::string> names() const;
+  int size() const { return int(materials_.size()); }
+
+ private:
+  std::vector<Material> materials_;
+};
+
+}  // namespace sf::dem

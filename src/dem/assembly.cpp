@@ -1,0 +1,336 @@
+#include "sandflow/dem/assembly.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <unordered_map>
+
+#include "sandflow/core/error.hpp"
+
+namespace sf::dem {
+namespace {
+
+double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+Vec2 spin(double w, const Vec2& r) {
+  return Vec2(-w * r.y(), w * r.x());
+}  // w x r
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::uint64_t pairKey(int a, int b) {
+  return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+}
+
+}  // namespace
+
+int Assembly::nextId() const {
+  int next = 0;
+  for (int id : bodies_.id) next = std::max(next, id + 1);
+  return next;
+}
+
+int Assembly::slot(int id) const {
+  const int s = bodies_.slot(id);
+  if (s < 0) throw Error("LOOKUP ELEMENT", "no element with id " + std::to_string(id));
+  return s;
+}
+
+int Assembly::add(ElementDef def) {
+  if (!def.shape) throw Error("VALUE SHAPE", "an element needs a shape");
+  if (def.material < 0 || def.material >= materials_.size())
+    throw Error("LOOKUP MATERIAL", "no such material");
+  if (!def.x.allFinite() || !std::isfinite(def.angle) || !def.v.allFinite() ||
+      !std::isfinite(def.w) || !def.force.allFinite() || !std::isfinite(def.torque) ||
+      !def.acceleration.allFinite())
+    throw Error("VALUE NUMBER", "element position, velocity and forces must be finite");
+  if (def.id < 0) def.id = nextId();
+  if (bodies_.slot(def.id) >= 0)
+    throw Error("EXISTS ELEMENT", "element id " + std::to_string(def.id) + " is in use");
+  bodies_.push(def.id);
+  const int s = bodies_.size() - 1;
+  bodies_.shape[s] = std::move(def.shape);
+  bodies_.material[s] = def.material;
+  bodies_.x[s] = def.x;
+  bodies_.angle[s] = def.angle;
+  bodies_.v[s] = def.v;
+  bodies_.w[s] = def.w;
+  bodies_.hold[s] = def.hold;
+  bodies_.appliedForce[s] = def.force;
+  bodies_.appliedTorque[s] = def.torque;
+  bodies_.acceleration[s] = def.acceleration;
+  updateMass(s);
+  touched();
+  return def.id;
+}
+
+void Assembly::remove(int id) {
+  bodies_.swapRemove(slot(id));
+  touched();
+}
+
+void Assembly::updateMass(int s) {
+  const Shape& shape = *bodies_.shape[s];
+  const double m = materials_[bodies_.material[s]].density * shape.area();
+  bodies_.mass[s] = m;
+  bodies_.inertia[s] = m * shape.inertiaPerMass();
+  const std::uint8_t h = bodies_.hold[s];
+  // A held degree of freedom moves as prescribed: to its contacts it is infinitely heavy.
+  bodies_.invMass[s] = (h & holdX) && (h & holdY) ? 0.0 : 1.0 / m;
+  bodies_.invInertia[s] = (h & holdRotation) ? 0.0 : 1.0 / bodies_.inertia[s];
+}
+
+double Assembly::criticalTimestep() const {
+  double mMin = std::numeric_limits<double>::infinity(), kMax = 0.0;
+  for (int s = 0; s < bodies_.size(); ++s) {
+    const Material& m = materials_[bodies_.material[s]];
+    kMax = std::max({kMax, m.kn, m.ks});
+    if (bodies_.invMass[s] > 0) mMin = std::min(mMin, bodies_.mass[s]);
+  }
+  if (!std::isfinite(mMin) || kMax <= 0) return std::numeric_limits<double>::infinity();
+  return 2.0 * std::sqrt(mMin / kMax);
+}
+
+std::size_t Assembly::touchingCount() const {
+  return std::count_if(contacts_.begin(), contacts_.end(),
+                       [](const Contact& c) { return c.touching; });
+}
+
+double Assembly::kineticEnergy() const {
+  double e = 0;
+  for (int s = 0; s < bodies_.size(); ++s)
+    e += 0.5 * bodies_.mass[s] * bodies_.v[s].squaredNorm() +
+         0.5 * bodies_.inertia[s] * bodies_.w[s] * bodies_.w[s];
+  return e;
+}
+
+Vec2 Assembly::momentum() const {
+  Vec2 p = Vec2::Zero();
+  for (int s = 0; s < bodies_.size(); ++s) p += bodies_.mass[s] * bodies_.v[s];
+  return p;
+}
+
+// Candidate pairs from boxes grown by a skin; rebuilt only once some element
+// has moved (or turned) by half the skin since the last build.
+void Assembly::updatePairs() {
+  const int n = bodies_.size();
+  bool rebuild = !pairsValid_ || int(builtAt_.size()) != n;
+  if (!rebuild)
+    for (int s = 0; s < n && !rebuild; ++s) {
+      const double moved =
+          (bodies_.x[s] - builtAt_[s]).norm() +
+          bodies_.shape[s]->boundingRadius() * std::abs(bodies_.angle[s] - builtAngle_[s]);
+      rebuild = moved > 0.5 * skin_;
+    }
+  if (!rebuild) return;
+
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int s = 0; s < n; ++s) smallest = std::min(smallest, bodies_.shape[s]->contactSize());
+  skin_ = std::isfinite(smallest) ? 0.2 * smallest : 0.0;
+  std::vector<Box> boxes(n);
+  for (int s = 0; s < n; ++s) {
+    Box b = bodies_.shape[s]->bounds(bodies_.x[s], bodies_.angle[s]);
+    boxes[s] = {b.lo - Vec2(skin_, skin_), b.hi + Vec2(skin_, skin_)};
+  }
+  std::vector<std::pair<int, int>> pairs;
+  dess_.findPairs(boxes, pairs);
+
+  std::unordered_map<std::uint64_t, Vec2> history;
+  for (const Contact& c : contacts_)
+    if (c.touching) history[pairKey(c.idA, c.idB)] = c.shear;
+  std::vector<Contact> next;
+  next.reserve(pairs.size());
+  for (const auto& [a, b] : pairs) {
+    if (!canCollide(bodies_.shape[a]->type(), bodies_.shape[b]->type())) continue;
+    const bool immovable = bodies_.invMass[a] == 0 && bodies_.invInertia[a] == 0 &&
+                           bodies_.invMass[b] == 0 && bodies_.invInertia[b] == 0;
+    if (immovable) continue;
+    Contact c{a, b, bodies_.id[a], bodies_.id[b]};
+    if (auto it = history.find(pairKey(c.idA, c.idB)); it != history.end()) {
+      c.shear = it->second;
+      c.touching = true;
+    }
+    next.push_back(c);
+  }
+  contacts_.swap(next);
+  builtAt_ = bodies_.x;
+  builtAngle_ = bodies_.angle;
+  pairsValid_ = true;
+  ++builds_;
+}
+
+void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocity) {
+  Bodies& b = bodies_;
+  const int n = b.size();
+  const std::vector<Vec2>& vel = useHalfVelocity ? b.vHalf : b.v;
+  const std::vector<double>& omega = useHalfVelocity ? b.wHalf : b.w;
+  for (int s = 0; s < n; ++s) {
+    b.force[s] = b.appliedForce[s] + b.mass[s] * (gravity + b.acceleration[s]);
+    b.torque[s] = b.appliedTorque[s];
+  }
+
+  const int nm = materials_.size();
+  std::vector<PairLaw> laws(nm * nm);
+  for (int i = 0; i < nm; ++i)
+    for (int j = 0; j < nm; ++j) laws[i * nm + j] = combine(materials_[i], materials_[j]);
+
+  const std::ptrdiff_t nc = std::ptrdiff_t(contacts_.size());
+  std::vector<Vec2> newShear(nc);
+  std::vector<char> excessive(nc, 0);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t k = 0; k < nc; ++k) {
+    Contact& c = contacts_[k];
+    const int i = c.a, j = c.b;
+    Manifold m;
+    if (!collide(*b.shape[i], {b.x[i], b.angle[i]}, *b.shape[j], {b.x[j], b.angle[j]}, m)) {
+      c.touching = false;
+      c.force = Vec2::Zero();
+      newShear[k] = Vec2::Zero();
+      continue;
+    }
+    const PairLaw& law = laws[b.material[i] * nm + b.material[j]];
+    const Vec2 ri = m.point - b.x[i], rj = m.point - b.x[j];
+    const Vec2 vrel = (vel[j] + spin(omega[j], rj)) - (vel[i] + spin(omega[i], ri));
+    const Vec2& nrm = m.normal;
+    const double vn = vrel.dot(nrm);
+    const Vec2 vt = vrel - vn * nrm;
+    const double meff = 1.0 / (b.invMass[i] + b.invMass[j]);
+    const double cn = law.damping >= 0 ? law.damping : 2.0 * law.zeta * std::sqrt(meff * law.kn);
+    const double fn = law.kn * m.overlap - cn * vn;  // along the normal, on j
+
+    // Incremental shear spring, kept in the plane of the contact as it turns.
+    Vec2 shear = c.touching ? c.shear : Vec2::Zero();
+    const double kept = shear.norm();
+    shear -= shear.dot(nrm) * nrm;
+    const double left = shear.norm();
+    if (left > 0) shear *= kept / left;
+    shear -= law.ks * dt * vt;
+    const double ct = 0.5 * cn;
+    Vec2 ft = shear - ct * vt;
+    const double cap = law.friction * std::abs(fn), ftn = ft.norm();
+    if (ftn > cap) {  // sliding: the spring holds what friction allows
+      ft *= cap / ftn;
+      shear = ft + ct * vt;
+    }
+    c.touching = true;
+    c.normal = nrm;
+    c.point = m.point;
+    c.overlap = m.overlap;
+    c.force = fn * nrm + ft;
+    newShear[k] = shear;
+    const double size = std::min(b.shape[i]->contactSize(), b.shape[j]->contactSize());
+    excessive[k] = m.overlap > maxOverlap * size || !c.force.allFinite();
+  }
+
+  for (std::ptrdiff_t k = 0; k < nc; ++k)
+    if (excessive[k]) {
+      const Contact& c = contacts_[k];
+      throw Error("UNSTABLE OVERLAP",
+                  "elements " + std::to_string(c.idA) + " and " + std::to_string(c.idB) +
+                      " overlap by " + formatNumber(c.overlap) + ", more than " +
+                      formatNumber(maxOverlap) +
+                      " of the smaller one's size: reduce the timestep or stiffen the material");
+    }
+  for (std::ptrdiff_t k = 0; k < nc; ++k) {
+    Contact& c = contacts_[k];
+    c.shear = newShear[k];
+    if (!c.touching) continue;
+    b.force[c.a] -= c.force;
+    b.force[c.b] += c.force;
+    b.torque[c.a] -= cross(c.point - b.x[c.a], c.force);
+    b.torque[c.b] += cross(c.point - b.x[c.b], c.force);
+  }
+  for (int s = 0; s < n; ++s)
+    if (!b.force[s].allFinite() || !std::isfinite(b.torque[s]))
+      throw Error("UNSTABLE NAN",
+                  "the force on element " + std::to_string(b.id[s]) + " is not finite");
+}
+
+void Assembly::integrate(double dt) {
+  Bodies& b = bodies_;
+  const int n = b.size();
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (int s = 0; s < n; ++s) {
+    const std::uint8_t h = b.hold[s];
+    Vec2 a = b.force[s] / b.mass[s];
+    double alpha = b.torque[s] / b.inertia[s];
+    if (h & holdX) a.x() = 0;
+    if (h & holdY) a.y() = 0;
+    if (h & holdRotation) alpha = 0;
+    switch (integrator) {
+      case Integrator::central:
+        if (!b.started[s]) {  // v(-dt/2) from v(0): second order from the first step
+          b.vHalf[s] = b.v[s] - 0.5 * dt * a;
+          b.wHalf[s] = b.w[s] - 0.5 * dt * alpha;
+          b.started[s] = 1;
+        }
+        b.vHalf[s] += dt * a;
+        b.wHalf[s] += dt * alpha;
+        b.x[s] += dt * b.vHalf[s];
+        b.angle[s] += dt * b.wHalf[s];
+        b.v[s] = b.vHalf[s] + 0.5 * dt * a;  // velocity at the same time as the position
+        b.w[s] = b.wHalf[s] + 0.5 * dt * alpha;
+        break;
+      case Integrator::euler:  // the thesis's first-order scheme
+        b.v[s] += dt * a;
+        b.w[s] += dt * alpha;
+        b.x[s] += dt * b.v[s];
+        b.angle[s] += dt * b.w[s];
+        break;
+      case Integrator::verlet:  // second half kick; the drift was done before the forces
+        b.v[s] = b.vHalf[s] + 0.5 * dt * a;
+        b.w[s] = b.wHalf[s] + 0.5 * dt * alpha;
+        break;
+    }
+  }
+}
+
+void Assembly::step(double dt, const Vec2& gravity) {
+  if (empty()) return;
+  auto t0 = Clock::now();
+  Bodies& b = bodies_;
+  const int n = b.size();
+  if (integrator == Integrator::verlet) {
+    // Kick-drift with the forces of the previous step, then forces, then kick.
+    const std::vector<Vec2> x0 = b.x;
+    const std::vector<double> a0 = b.angle;
+    for (int s = 0; s < n; ++s)
+      if (!b.started[s]) b.force[s] = Vec2::Zero(), b.torque[s] = 0, b.started[s] = 1;
+    for (int s = 0; s < n; ++s) {
+      Vec2 a = b.force[s] / b.mass[s];
+      double alpha = b.torque[s] / b.inertia[s];
+      if (b.hold[s] & holdX) a.x() = 0;
+      if (b.hold[s] & holdY) a.y() = 0;
+      if (b.hold[s] & holdRotation) alpha = 0;
+      b.vHalf[s] = b.v[s] + 0.5 * dt * a;
+      b.wHalf[s] = b.w[s] + 0.5 * dt * alpha;
+      b.x[s] += dt * b.vHalf[s];
+      b.angle[s] += dt * b.wHalf[s];
+    }
+    updatePairs();
+    times_.sort += since(t0);
+    t0 = Clock::now();
+    try {
+      computeForces(dt, gravity, true);
+    } catch (...) {
+      b.x = x0;
+      b.angle = a0;
+      throw;
+    }
+  } else {
+    updatePairs();
+    times_.sort += since(t0);
+    t0 = Clock::now();
+    computeForces(dt, gravity, false);
+  }
+  times_.narrow += since(t0);
+  t0 = Clock::now();
+  integrate(dt);
+  times_.integrate += since(t0);
+}
+
+}  // namespace sf::dem

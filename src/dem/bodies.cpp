@@ -1,0 +1,42 @@
+#include "sandflow/dem/bodies.hpp"
+
+namespace sf::dem {
+
+int Bodies::slot(int elementId) const {
+  const auto it = slotOf.find(elementId);
+  return it == slotOf.end() ? -1 : it->second;
+}
+
+void Bodies::push(int elementId) {
+  slotOf[elementId] = size();
+  id.push_back(elementId);
+  shape.emplace_back();
+  material.push_back(0);
+  for (auto* a : {&x, &v, &vHalf, &force, &appliedForce, &acceleration}) a->push_back(Vec2::Zero());
+  for (auto* a :
+       {&angle, &w, &wHalf, &torque, &appliedTorque, &mass, &inertia, &invMass, &invInertia})
+    a->push_back(0.0);
+  hold.push_back(0);
+  started.push_back(0);
+}
+
+void Bodies::swapRemove(int s) {
+  const int last = size() - 1;
+  slotOf.erase(id[s]);
+  auto move = [&](auto& a) {
+    if (s != last) a[s] = std::move(a[last]);
+    a.pop_back();
+  };
+  move(id);
+  move(shape);
+  move(material);
+  for (auto* a : {&x, &v, &vHalf, &force, &appliedForce, &acceleration}) move(*a);
+  for (auto* a :
+       {&angle, &w, &wHalf, &torque, &appliedTorque, &mass, &inertia, &invMass, &invInertia})
+    move(*a);
+  move(hold);
+  move(started);
+  if (s != last) slotOf[id[s]] = s;
+}
+
+}  // namespace sf::dem

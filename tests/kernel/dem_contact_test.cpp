@@ -1,0 +1,206 @@
+// Contact law against analytic results: normal impact, restitution, a disc on
+// an incline, energy and momentum.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "sandflow/dem/assembly.hpp"
+
+namespace sf::dem {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+Material material(double e, double mu, double k = 1e5) {
+  Material m{"grain"};
+  m.density = 2650;
+  m.kn = m.ks = k;
+  m.restitution = e;
+  m.friction = mu;
+  return m;
+}
+
+int disc(Assembly& a, Vec2 x, double r, Vec2 v = Vec2::Zero(), int material = 1) {
+  ElementDef d;
+  d.shape = std::make_unique<Disc>(r);
+  d.material = material;
+  d.x = x;
+  d.v = v;
+  return a.add(std::move(d));
+}
+
+int wall(Assembly& a, Vec2 from, Vec2 to, int material = 1) {
+  ElementDef d;
+  const Vec2 seg = to - from;
+  d.shape = std::make_unique<Wall>(seg.norm(), 0.01 * seg.norm());
+  d.material = material;
+  d.x = 0.5 * (from + to);
+  d.angle = std::atan2(seg.y(), seg.x());
+  d.hold = holdX | holdY | holdRotation;
+  return a.add(std::move(d));
+}
+
+struct Impact {
+  double duration, maxOverlap, restitution;
+};
+
+// Two equal discs approaching head-on at relative speed 2 v.
+Impact headOn(double e, Integrator integrator = Integrator::central, int stepsPerContact = 400) {
+  Assembly a;
+  a.integrator = integrator;
+  a.materials().add(material(e, 0.0));
+  const double r = 1e-3, v = 0.1;
+  const int i = disc(a, Vec2(-r - 1e-5, 0), r, Vec2(v, 0));
+  const int j = disc(a, Vec2(r + 1e-5, 0), r, Vec2(-v, 0));
+  const double m = a.bodies().mass[0], meff = m / 2, k = 1e5;
+  const double dt = pi * std::sqrt(meff / k) / stepsPerContact;
+  Impact out{0, 0, 0};
+  double start = -1, t = 0;
+  for (int s = 0; s < 20 * stepsPerContact; ++s) {
+    a.step(dt, Vec2::Zero());
+    t += dt;
+    const bool touching = a.touchingCount() > 0;
+    if (touching && start < 0) start = t - dt;  // contact began during this step
+    if (touching) out.maxOverlap = std::max(out.maxOverlap, a.contacts()[0].overlap);
+    if (!touching && start >= 0) {
+      out.duration = t - dt - start;
+      break;
+    }
+  }
+  const Bodies& b = a.bodies();
+  out.restitution = (b.v[b.slot(j)].x() - b.v[b.slot(i)].x()) / (2 * v);
+  return out;
+}
+
+TEST(DemContact, LinearImpactDurationAndOverlap) {
+  const double r = 1e-3, v = 0.1, k = 1e5;
+  const double m = 2650 * pi * r * r, meff = m / 2;
+  const Impact hit = headOn(1.0);
+  EXPECT_NEAR(hit.duration / (pi * std::sqrt(meff / k)), 1.0, 0.005);
+  EXPECT_NEAR(hit.maxOverlap / (2 * v * std::sqrt(meff / k)), 1.0, 0.005);
+  EXPECT_NEAR(hit.restitution, 1.0, 1e-3);
+}
+
+TEST(DemContact, MeasuredRestitutionMatchesTheSetValue) {
+  for (double e : {0.1, 0.5, 0.9}) {
+    const Impact hit = headOn(e);
+    EXPECT_NEAR(hit.restitution / e, 1.0, 0.01) << "e = " << e;
+  }
+}
+
+TEST(DemContact, EveryIntegratorGetsTheImpactRight) {
+  for (Integrator integrator : {Integrator::central, Integrator::verlet, Integrator::euler}) {
+    const Impact hit = headOn(0.5, integrator);
+    EXPECT_NEAR(hit.restitution / 0.5, 1.0, 0.02) << integratorNames[int(integrator)];
+  }
+}
+
+// A disc on a floor with gravity tilted by theta: rolls without slip with
+// a = g sin(theta) / (1 + I/(m r^2)) = 2/3 g sin(theta) when tan(theta) <= 3 mu,
+// and slides with a = g (sin - mu cos) otherwise.
+struct Roll {
+  double acceleration, slip;
+};
+Roll incline(double theta, double mu) {
+  Assembly a;
+  a.materials().add(material(0.3, mu, 1e6));
+  const double r = 1e-3, g = 9.81;
+  wall(a, Vec2(-1, 0), Vec2(1, 0));
+  const Vec2 gravity(g * std::sin(theta), -g * std::cos(theta));
+  const int d = disc(a, Vec2(0, r - 2650 * pi * r * r * g * std::cos(theta) / 1e6), r);
+  const double dt = 1e-6;
+  for (int s = 0; s < 20000; ++s) a.step(dt, gravity);  // settle onto the floor
+  const int slot = a.slot(d);
+  const double v1 = a.bodies().v[slot].x();
+  const int n = 20000;
+  for (int s = 0; s < n; ++s) a.step(dt, gravity);
+  const double v2 = a.bodies().v[slot].x();
+  const double slip = v2 + a.bodies().w[slot] * r;  // contact point velocity
+  return {(v2 - v1) / (n * dt), slip / std::abs(v2)};
+}
+
+TEST(DemContact, DiscRollsWithoutSlipBelowThreeMu) {
+  const double g = 9.81, mu = 0.3;
+  for (double theta : {0.2, 0.5}) {  // tan = 0.20, 0.55 < 3 mu = 0.9
+    const Roll roll = incline(theta, mu);
+    EXPECT_NEAR(roll.acceleration / (2.0 / 3.0 * g * std::sin(theta)), 1.0, 0.005) << theta;
+    EXPECT_LT(std::abs(roll.slip), 0.01) << theta;
+  }
+}
+
+TEST(DemContact, DiscSlidesAboveThreeMu) {
+  const double g = 9.81, mu = 0.1, theta = 0.5;  // tan = 0.55 > 3 mu = 0.3
+  const Roll roll = incline(theta, mu);
+  EXPECT_NEAR(roll.acceleration / (g * (std::sin(theta) - mu * std::cos(theta))), 1.0, 0.005);
+  EXPECT_GT(std::abs(roll.slip), 0.05);
+}
+
+double boxEnergyDrift(double fraction, long steps) {
+  Assembly a;
+  a.materials().add(material(1.0, 0.0));
+  const double L = 0.02;
+  wall(a, Vec2(0, 0), Vec2(L, 0));
+  wall(a, Vec2(L, 0), Vec2(L, L));
+  wall(a, Vec2(L, L), Vec2(0, L));
+  wall(a, Vec2(0, L), Vec2(0, 0));
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j)
+      disc(a, Vec2((i + 0.5) * L / 5, (j + 0.5) * L / 5), 0.8e-3 + 0.3e-3 * u(rng),
+           Vec2(u(rng), u(rng)) * 0.2);
+  const double dt = a.criticalTimestep() * fraction;
+  const double e0 = a.kineticEnergy();
+  double worst = 0;
+  for (long s = 0; s < steps; ++s) {
+    a.step(dt, Vec2::Zero());
+    if (a.touchingCount() == 0) worst = std::max(worst, std::abs(a.kineticEnergy() - e0) / e0);
+  }
+  return worst;
+}
+
+// Leapfrog's energy error comes from the kink of the force where a contact
+// opens or closes; it falls steeply with the timestep (docs/dem.md): 8.6e-3 at
+// dt_crit/10, 3.9e-4 at dt_crit/40, 4.0e-5 at dt_crit/80 over 1e5 steps.
+TEST(DemContact, UndampedFrictionlessBoxConservesEnergy) {
+  EXPECT_LE(boxEnergyDrift(1.0 / 80, 100000), 1e-4);
+}
+
+TEST(DemContact, FreeClusterConservesMomentum) {
+  Assembly a;
+  a.materials().add(material(0.4, 0.5));
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      disc(a, Vec2(i * 1.9e-3, j * 1.9e-3), 0.8e-3 + 0.2e-3 * u(rng),
+           Vec2(-i + 2.5 + u(rng), -j + 2.5 + u(rng)) * 0.05);
+  auto angular = [&] {
+    const Bodies& b = a.bodies();
+    double l = 0;
+    for (int s = 0; s < b.size(); ++s)
+      l += b.mass[s] * (b.x[s].x() * b.v[s].y() - b.x[s].y() * b.v[s].x()) + b.inertia[s] * b.w[s];
+    return l;
+  };
+  const Vec2 p0 = a.momentum();
+  const double l0 = angular(), scale = a.bodies().mass[0] * 0.1;
+  const double dt = a.criticalTimestep() / 20;
+  for (int s = 0; s < 20000; ++s) a.step(dt, Vec2::Zero());
+  EXPECT_GT(a.broadPhaseBuilds(), 1);
+  EXPECT_LE((a.momentum() - p0).norm() / scale, 1e-12);
+  EXPECT_LE(std::abs(angular() - l0) / (scale * 1e-2), 1e-6);
+}
+
+TEST(DemContact, CriticalTimestepUsesLightestElementAndStiffestMaterial) {
+  Assembly a;
+  a.materials().add(material(0.5, 0.5, 4e5));
+  disc(a, Vec2(0, 0), 1e-3);
+  disc(a, Vec2(1, 0), 0.5e-3);
+  const double m = 2650 * pi * 0.25e-6;
+  EXPECT_NEAR(a.criticalTimestep(), 2 * std::sqrt(m / 4e5), 1e-15);
+}
+
+}  // namespace
+}  // namespace sf::dem
