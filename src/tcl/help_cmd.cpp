@@ -8,7 +8,11 @@ namespace {
 constexpr const char* kHelp =
     "sandflow commands (\"NOUN help\" lists a noun's verbs and options):\n"
     "  lattice   the lattice-Boltzmann fluid: create, configure, info, probe, obstacles\n"
-    "  sim       simulation settings and state: configure -timestep -threads, info\n"
+    "  material  materials: create, configure, cget, names\n"
+    "  disc      disc create -center {x y} -radius r ...\n"
+    "  wall      wall create -from {x y} -to {x y} ...  (a line element)\n"
+    "  element   any element: configure, cget, info, ids, delete, next\n"
+    "  sim       settings and state: configure -timestep -threads -gravity -integrator, info\n"
     "  run N ?-every K script?   advance N steps\n"
     "  step      advance one step\n"
     "  reset     empty the scene\n"

@@ -14,7 +14,7 @@ namespace eval ::sf {
   if {[info commands ::sf::warn] eq ""} {
     proc warn {message} { puts stderr "sandflow warning: $message" }
   }
-  namespace export lattice sim run step reset output help
+  namespace export lattice sim run step reset output help material disc wall element
 }
 )tcl";
 
@@ -47,6 +47,8 @@ extern "C" int Sandflow_Init(Tcl_Interp* interp) {
   registerRunCommands(interp, session);
   registerOutputCommands(interp, session);
   registerHelpCommand(interp, session);
+  registerMaterialCommands(interp, session);
+  registerElementCommands(interp, session);
   if (Tcl_Eval(interp, kWarnProc) != TCL_OK) return TCL_ERROR;
   return Tcl_PkgProvide(interp, "sandflow", SANDFLOW_VERSION);
 }

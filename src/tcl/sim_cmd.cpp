@@ -8,11 +8,18 @@
 namespace sf::tcl {
 namespace {
 
-enum Opt { kTimestep, kThreads, kOptionCount };
+enum Opt { kTimestep, kThreads, kGravity, kIntegrator, kMaxOverlap, kOptionCount };
 
 const OptionSpec kOptions[] = {
     {"-timestep", "dt", "fix the timestep (a lattice's tau then follows from it)"},
     {"-threads", "n", "threads for the step (results do not depend on it)"},
+    {"-gravity", "{gx gy}", "gravitational acceleration on the elements (default {0 0})"},
+    {"-integrator", "central|euler|verlet",
+     "element integrator: central difference (default), the thesis's first-order scheme, "
+     "velocity Verlet"},
+    {"-maxoverlap", "f",
+     "a contact overlapping more than f of the smaller element stops the run "
+     "(default 0.5)"},
     {nullptr, nullptr, nullptr}};
 
 Session& sessionOf(ClientData data) {
@@ -20,8 +27,18 @@ Session& sessionOf(ClientData data) {
 }
 
 Tcl_Obj* optionValue(const sim::Manager& m, int k) {
-  if (k == kTimestep) return newDouble(m.timestep());
-  return Tcl_NewIntObj(m.threads());
+  switch (k) {
+    case kTimestep:
+      return newDouble(m.timestep());
+    case kThreads:
+      return Tcl_NewIntObj(m.threads());
+    case kGravity:
+      return newVec2(m.gravity());
+    case kIntegrator:
+      return Tcl_NewStringObj(dem::integratorNames[int(m.assembly().integrator)], -1);
+    default:
+      return newDouble(m.assembly().maxOverlap);
+  }
 }
 
 int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
@@ -46,10 +63,26 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
     return TCL_ERROR;
   }
   // Stage every value, validate, then commit: a refused option changes nothing.
-  std::optional<double> timestep;
-  std::optional<int> threads;
+  std::optional<double> timestep, maxOverlap;
+  std::optional<int> threads, integrator;
+  std::optional<Vec2> gravity;
   if (!parseOptions(interp, objc, objv, 1, kOptions, [&](int k, Tcl_Obj* v) {
-        if (k == kTimestep) {
+        if (k == kGravity) {
+          Vec2 g;
+          if (!getVec2(interp, v, "-gravity", g)) return false;
+          gravity = g;
+        } else if (k == kIntegrator) {
+          int i = 0;
+          if (!getChoice(interp, v, "integrator", dem::integratorNames, i)) return false;
+          integrator = i;
+        } else if (k == kMaxOverlap) {
+          double f = 0;
+          if (!getDouble(interp, v, "-maxoverlap", f)) return false;
+          if (!(f > 0 && f <= 2))
+            return reject(interp, "VALUE MAXOVERLAP",
+                          "-maxoverlap must be > 0 and <= 2, got " + formatNumber(f));
+          maxOverlap = f;
+        } else if (k == kTimestep) {
           double dt = 0;
           if (!getDouble(interp, v, "-timestep", dt)) return false;
           if (!(dt > 0))
@@ -70,6 +103,9 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
   return guarded(interp, [&] {
     if (timestep) m.setTimestep(*timestep);  // the only step that can refuse
     if (threads) m.setThreads(*threads);
+    if (gravity) m.setGravity(*gravity);
+    if (integrator) m.assembly().integrator = static_cast<dem::Integrator>(*integrator);
+    if (maxOverlap) m.assembly().maxOverlap = *maxOverlap;
     return TCL_OK;
   });
 }
@@ -104,15 +140,17 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
                        {"timestep", newDouble(m.timestep())},
                        {"tau", newDouble(tau)},
                        {"mach", newDouble(mach)},
-                       {"elements", Tcl_NewIntObj(0)},
-                       {"contacts", Tcl_NewIntObj(0)},
+                       {"elements", Tcl_NewIntObj(m.assembly().bodies().size())},
+                       {"contacts", Tcl_NewWideIntObj(Tcl_WideInt(m.assembly().touchingCount()))},
                        {"bonds", Tcl_NewIntObj(0)},
                        {"broken", Tcl_NewIntObj(0)},
                        {"nodes", Tcl_NewWideIntObj(lattice ? Tcl_WideInt(m.lattice().nodes()) : 0)},
                        {"mlups", newDouble(m.mlups())},
                        {"stable", Tcl_NewBooleanObj(stable)},
                        {"threads", Tcl_NewIntObj(m.threads())},
-                       {"warnings", warnings}}));
+                       {"warnings", warnings},
+                       {"kinetic", newDouble(m.assembly().kineticEnergy())},
+                       {"critical", newDouble(m.assembly().criticalTimestep())}}));
   return TCL_OK;
 }
 

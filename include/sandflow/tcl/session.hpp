@@ -20,6 +20,8 @@ void registerSimCommands(Tcl_Interp* interp, Session* session);
 void registerRunCommands(Tcl_Interp* interp, Session* session);
 void registerOutputCommands(Tcl_Interp* interp, Session* session);
 void registerHelpCommand(Tcl_Interp* interp, Session* session);
+void registerMaterialCommands(Tcl_Interp* interp, Session* session);
+void registerElementCommands(Tcl_Interp* interp, Session* session);
 
 }  // namespace sf::tcl
 
