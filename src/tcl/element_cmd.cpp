@@ -398,7 +398,8 @@ int ElementInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
                         {"fix", holdValue(b.hold[s])},
                         {"applied", triple(b.appliedForce[s], b.appliedTorque[s])},
                         {"acceleration", newVec2(b.acceleration[s])},
-                        {"contacts", Tcl_NewIntObj(contacts)}});
+                        {"contacts", Tcl_NewIntObj(contacts)},
+                        {"contactforce", newVec2(a.contactForce(s))}});
   if (shape.type() == ShapeType::disc) dictPut(d, "radius", fieldValue(a, s, fRadius));
   if (shape.type() == ShapeType::wall) {
     dictPut(d, "from", fieldValue(a, s, fFrom));

@@ -72,6 +72,8 @@ class Assembly {
 
   const std::vector<Contact>& contacts() const { return contacts_; }
   std::size_t touchingCount() const;
+  // Sum of the contact forces on one element (its reaction, for a wall).
+  Vec2 contactForce(int slot) const;
   double kineticEnergy() const;
   Vec2 momentum() const;
   const StepTimes& times() const { return times_; }
