@@ -1,42 +1,11 @@
 #include "sandflow/dem/narrow_phase.hpp"
 
-#include <algorithm>
-#include <cmath>
+#include "collide.hpp"
 
 namespace sf::dem {
 namespace {
 
 using Routine = bool (*)(const Shape&, const Pose&, const Shape&, const Pose&, Manifold&);
-
-bool discDisc(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, Manifold& m) {
-  const double ra = static_cast<const Disc&>(a).radius(), rb = static_cast<const Disc&>(b).radius();
-  const Vec2 d = pb.x - pa.x;
-  const double dist2 = d.squaredNorm(), reach = ra + rb;
-  if (dist2 >= reach * reach) return false;
-  const double dist = std::sqrt(dist2);
-  m.normal = dist > 0 ? Vec2(d / dist) : Vec2(1, 0);
-  m.overlap = reach - dist;
-  m.point = pa.x + m.normal * (ra - 0.5 * m.overlap);
-  return true;
-}
-
-bool wallDisc(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, Manifold& m) {
-  const auto [p, q] = static_cast<const Wall&>(a).ends(pa.x, pa.angle);
-  const double r = static_cast<const Disc&>(b).radius();
-  const Vec2 seg = q - p;
-  const double len2 = seg.squaredNorm();
-  const double t = len2 > 0 ? std::clamp((pb.x - p).dot(seg) / len2, 0.0, 1.0) : 0.0;
-  const Vec2 closest = p + t * seg;
-  const Vec2 d = pb.x - closest;
-  const double dist2 = d.squaredNorm();
-  if (dist2 >= r * r) return false;
-  const double dist = std::sqrt(dist2);
-  // A centre exactly on the line: push along the wall's left normal.
-  m.normal = dist > 0 ? Vec2(d / dist) : Vec2(Vec2(-seg.y(), seg.x()).normalized());
-  m.overlap = r - dist;
-  m.point = closest - 0.5 * m.overlap * m.normal;
-  return true;
-}
 
 struct Table {
   Routine routine[kShapeTypes][kShapeTypes] = {};
@@ -49,8 +18,11 @@ struct Table {
     }
   }
   Table() {
-    add(ShapeType::disc, ShapeType::disc, discDisc);
-    add(ShapeType::wall, ShapeType::disc, wallDisc);
+    add(ShapeType::disc, ShapeType::disc, collideDiscDisc);
+    add(ShapeType::wall, ShapeType::disc, collideWallDisc);
+    add(ShapeType::polygon, ShapeType::disc, collidePolygonDisc);
+    add(ShapeType::polygon, ShapeType::polygon, collidePolygonPolygon);
+    add(ShapeType::wall, ShapeType::polygon, collideWallPolygon);
   }
 };
 

@@ -1,8 +1,10 @@
 // disc create, wall create, element configure|cget|info|ids|delete|next|help
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 
+#include "sandflow/dem/polygon.hpp"
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/session.hpp"
 
@@ -24,7 +26,10 @@ enum Field {
   fFix,
   fForce,
   fAcceleration,
-  fId
+  fId,
+  fVertices,
+  fAxes,
+  fSides
 };
 
 // Every option an element command may take; each command's table is a subset.
@@ -42,6 +47,9 @@ const OptionSpec kAll[] = {
     {"-force", "{Fx Fy T}", "applied force and torque"},
     {"-acceleration", "{ax ay}", "a body acceleration of its own, added to gravity"},
     {"-id", "N", "the element's id (default: the next free one)"},
+    {"-vertices", "{x1 y1 x2 y2 ...}", "corners of a convex polygon, in either order"},
+    {"-axes", "{a b}", "semi-axes of the ellipse along its own x and y"},
+    {"-sides", "N", "sides of the polygon that approximates the ellipse (default 32)"},
 };
 
 struct Table {
@@ -63,6 +71,15 @@ const Table& wallTable() {
                        fVelocity, fFix, fForce,     fAcceleration, fId};
   return t;
 }
+const Table& polygonTable() {
+  static const Table t{fVertices, fMaterial, fVelocity, fFix, fForce, fAcceleration, fId};
+  return t;
+}
+const Table& ellipseTable() {
+  static const Table t{fCenter,   fAxes, fSides, fMaterial,     fAngle,
+                       fVelocity, fFix,  fForce, fAcceleration, fId};
+  return t;
+}
 const Table& configureTable() {
   static const Table t{fCenter, fRadius,   fFrom, fTo,    fMaterial,
                        fAngle,  fVelocity, fFix,  fForce, fAcceleration};
@@ -76,6 +93,9 @@ struct Edit {
   std::optional<int> material, id;
   std::optional<Eigen::Vector3d> velocity, force;
   std::optional<std::uint8_t> hold;
+  std::optional<std::vector<Vec2>> vertices;
+  std::optional<Vec2> axes;
+  std::optional<int> sides;
 };
 
 Session& sessionOf(ClientData data) {
@@ -154,6 +174,38 @@ bool parseEdit(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first, c
         e.hold = h;
         return true;
       }
+      case fVertices: {
+        int n = 0;
+        Tcl_Obj** items = nullptr;
+        if (Tcl_ListObjGetElements(interp, v, &n, &items) != TCL_OK) return false;
+        if (n < 6 || n % 2)
+          return reject(interp, "VALUE VERTICES",
+                        "-vertices must be a list of at least 3 points {x1 y1 x2 y2 x3 y3 ...}");
+        std::vector<Vec2> pts;
+        for (int i = 0; i < n; i += 2) {
+          double x = 0, y = 0;
+          if (!getDouble(interp, items[i], name, x) || !getDouble(interp, items[i + 1], name, y))
+            return false;
+          pts.emplace_back(x, y);
+        }
+        e.vertices = pts;
+        return true;
+      }
+      case fAxes:
+        if (!getVec2(interp, v, name, p)) return false;
+        if (!(p.x() > 0 && p.y() > 0))
+          return reject(interp, "VALUE AXES", "-axes must both be > 0");
+        e.axes = p;
+        return true;
+      case fSides: {
+        int n = 0;
+        if (!getInt(interp, v, name, n)) return false;
+        if (n < 3 || n > 10000)
+          return reject(interp, "VALUE SIDES",
+                        "-sides must be 3 to 10000, got " + std::to_string(n));
+        e.sides = n;
+        return true;
+      }
       case fId: {
         int id = 0;
         if (!getInt(interp, v, name, id)) return false;
@@ -225,6 +277,51 @@ int WallCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
   return create(interp, s, std::move(def));
 }
 
+int PolygonCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  Session& s = sessionOf(data);
+  if (objc % 2 == 0) {
+    Tcl_WrongNumArgs(interp, 1, objv, "-vertices {x1 y1 x2 y2 ...} ?-option value ...?");
+    return TCL_ERROR;
+  }
+  Edit e;
+  if (!parseEdit(interp, objc, objv, 1, polygonTable(), s.manager.assembly(), e)) return TCL_ERROR;
+  if (!e.vertices) return fail(interp, "VALUE VERTICES", "polygon create needs -vertices");
+  return guarded(interp, [&] {
+    ElementDef def;
+    Vec2 centroid;
+    def.shape = std::make_unique<dem::Polygon>(dem::Polygon::fromVertices(*e.vertices, centroid));
+    def.x = centroid;
+    applyCommon(e, def);
+    return create(interp, s, std::move(def));
+  });
+}
+
+int EllipseCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  Session& s = sessionOf(data);
+  if (objc % 2 == 0) {
+    Tcl_WrongNumArgs(interp, 1, objv, "-center {x y} -axes {a b} ?-sides N? ?-option value ...?");
+    return TCL_ERROR;
+  }
+  Edit e;
+  if (!parseEdit(interp, objc, objv, 1, ellipseTable(), s.manager.assembly(), e)) return TCL_ERROR;
+  if (!e.center) return fail(interp, "VALUE CENTER", "ellipse create needs -center {x y}");
+  if (!e.axes) return fail(interp, "VALUE AXES", "ellipse create needs -axes {a b}");
+  const int n = e.sides.value_or(32);
+  std::vector<Vec2> outline;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * std::numbers::pi * k / n;
+    outline.emplace_back(e.axes->x() * std::cos(t), e.axes->y() * std::sin(t));
+  }
+  return guarded(interp, [&] {
+    ElementDef def;
+    Vec2 centroid;
+    def.shape = std::make_unique<dem::Polygon>(dem::Polygon::fromVertices(outline, centroid));
+    def.x = *e.center;
+    applyCommon(e, def);
+    return create(interp, s, std::move(def));
+  });
+}
+
 bool getElement(Tcl_Interp* interp, Tcl_Obj* obj, const dem::Assembly& a, int& slot) {
   int id = 0;
   if (!getInt(interp, obj, "ID", id)) return false;
@@ -279,6 +376,10 @@ Tcl_Obj* fieldValue(const dem::Assembly& a, int s, Field f) {
       return triple(b.appliedForce[s], b.appliedTorque[s]);
     case fAcceleration:
       return newVec2(b.acceleration[s]);
+    case fVertices:
+    case fAxes:
+    case fSides:
+      return Tcl_NewObj();  // creation-only; element info lists a polygon's vertices
     case fId:
       return Tcl_NewIntObj(b.id[s]);
   }
@@ -401,6 +502,14 @@ int ElementInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
                         {"contacts", Tcl_NewIntObj(contacts)},
                         {"contactforce", newVec2(a.contactForce(s))}});
   if (shape.type() == ShapeType::disc) dictPut(d, "radius", fieldValue(a, s, fRadius));
+  if (shape.type() == ShapeType::polygon) {
+    Tcl_Obj* v = Tcl_NewListObj(0, nullptr);
+    for (const Vec2& p : static_cast<const dem::Polygon&>(shape).world(b.x[s], b.angle[s])) {
+      Tcl_ListObjAppendElement(nullptr, v, newDouble(p.x()));
+      Tcl_ListObjAppendElement(nullptr, v, newDouble(p.y()));
+    }
+    dictPut(d, "vertices", v);
+  }
   if (shape.type() == ShapeType::wall) {
     dictPut(d, "from", fieldValue(a, s, fFrom));
     dictPut(d, "to", fieldValue(a, s, fTo));
@@ -472,6 +581,18 @@ int WallHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   return helpFor(interp, objc, objv, "wall",
                  {"create -from {x y} -to {x y} ?-option value ...?   -> id", "help"}, wallTable());
 }
+int PolygonHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  return helpFor(interp, objc, objv, "polygon",
+                 {"create -vertices {x1 y1 x2 y2 ...} ?-option value ...?   -> id", "help"},
+                 polygonTable());
+}
+int EllipseHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  return helpFor(interp, objc, objv, "ellipse",
+                 {"create -center {x y} -axes {a b} ?-sides N? ?-option value ...?   -> id "
+                  "(an N-sided polygon)",
+                  "help"},
+                 ellipseTable());
+}
 int ElementHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   return helpFor(interp, objc, objv, "element",
                  {"configure ID ?-option value ...?", "cget ID -option",
@@ -486,6 +607,10 @@ int ElementHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[])
 void registerElementCommands(Tcl_Interp* interp, Session* session) {
   makeEnsemble(interp, "::sf::disc", {{"create", DiscCreate}, {"help", DiscHelp}}, session);
   makeEnsemble(interp, "::sf::wall", {{"create", WallCreate}, {"help", WallHelp}}, session);
+  makeEnsemble(interp, "::sf::polygon", {{"create", PolygonCreate}, {"help", PolygonHelp}},
+               session);
+  makeEnsemble(interp, "::sf::ellipse", {{"create", EllipseCreate}, {"help", EllipseHelp}},
+               session);
   makeEnsemble(interp, "::sf::element",
                {{"configure", ElementConfigure},
                 {"cget", ElementCget},

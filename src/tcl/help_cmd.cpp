@@ -11,6 +11,8 @@ constexpr const char* kHelp =
     "  material  materials: create, configure, cget, names\n"
     "  disc      disc create -center {x y} -radius r ...\n"
     "  wall      wall create -from {x y} -to {x y} ...  (a line element)\n"
+    "  polygon   polygon create -vertices {x1 y1 ...} ...  (convex)\n"
+    "  ellipse   ellipse create -center {x y} -axes {a b} ?-sides N? ...\n"
     "  element   any element: configure, cget, info, ids, delete, next\n"
     "  sim       settings and state: configure -timestep -threads -gravity -integrator, info\n"
     "  run N ?-every K script?   advance N steps\n"

@@ -14,7 +14,7 @@ namespace eval ::sf {
   if {[info commands ::sf::warn] eq ""} {
     proc warn {message} { puts stderr "sandflow warning: $message" }
   }
-  namespace export lattice sim run step reset output help material disc wall element
+  namespace export lattice sim run step reset output help material disc wall polygon ellipse element
 }
 )tcl";
 
