@@ -70,6 +70,7 @@ int Assembly::add(ElementDef def) {
 
 void Assembly::remove(int id) {
   bodies_.swapRemove(slot(id));
+  std::erase_if(bonds_, [&](const Bond& x) { return x.idA == id || x.idB == id; });
   touched();
 }
 
@@ -251,6 +252,7 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
     b.torque[c.a] -= cross(c.point - b.x[c.a], c.force);
     b.torque[c.b] += cross(c.point - b.x[c.b], c.force);
   }
+  if (!bonds_.empty()) bondForces(dt, vel, omega);
   for (int s = 0; s < n; ++s)
     if (!b.force[s].allFinite() || !std::isfinite(b.torque[s]))
       throw Error("UNSTABLE NAN",
@@ -343,6 +345,7 @@ void Assembly::step(double dt, const Vec2& gravity) {
   times_.narrow += since(t0);
   t0 = Clock::now();
   integrate(dt);
+  time_ += dt;
   times_.integrate += since(t0);
 }
 

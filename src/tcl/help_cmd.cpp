@@ -14,6 +14,7 @@ constexpr const char* kHelp =
     "  polygon   polygon create -vertices {x1 y1 ...} ...  (convex)\n"
     "  ellipse   ellipse create -center {x y} -axes {a b} ?-sides N? ...\n"
     "  element   any element: configure, cget, info, ids, delete, next\n"
+    "  bond      bonds (cementation): create, auto, ids, info, delete, broken\n"
     "  sim       settings and state: configure -timestep -threads -gravity -integrator, info\n"
     "  run N ?-every K script?   advance N steps\n"
     "  step      advance one step\n"

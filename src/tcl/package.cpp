@@ -14,7 +14,7 @@ namespace eval ::sf {
   if {[info commands ::sf::warn] eq ""} {
     proc warn {message} { puts stderr "sandflow warning: $message" }
   }
-  namespace export lattice sim run step reset output help material disc wall polygon ellipse element
+  namespace export lattice sim run step reset output help material disc wall polygon ellipse element bond
 }
 )tcl";
 
@@ -49,6 +49,7 @@ extern "C" int Sandflow_Init(Tcl_Interp* interp) {
   registerHelpCommand(interp, session);
   registerMaterialCommands(interp, session);
   registerElementCommands(interp, session);
+  registerBondCommands(interp, session);
   if (Tcl_Eval(interp, kWarnProc) != TCL_OK) return TCL_ERROR;
   return Tcl_PkgProvide(interp, "sandflow", SANDFLOW_VERSION);
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "sandflow/dem/bodies.hpp"
+#include "sandflow/dem/bond.hpp"
 #include "sandflow/dem/dess.hpp"
 #include "sandflow/dem/material.hpp"
 #include "sandflow/dem/narrow_phase.hpp"
@@ -71,6 +72,19 @@ class Assembly {
   int threads = 1;
 
   const std::vector<Contact>& contacts() const { return contacts_; }
+
+  // Bonds. `bond` makes one between two elements at their closest surface
+  // points (stiffness/strength < 0: from the elements' materials).
+  int bond(int idA, int idB, double stiffness = -1, double strength = -1,
+           double shearStrength = -1);
+  // Bonds every pair among `ids` (all elements when empty) whose surfaces are
+  // closer than `gap`; returns how many were made.
+  int bondAll(const std::vector<int>& ids, double gap);
+  void unbond(int bondId);
+  const std::vector<Bond>& bonds() const { return bonds_; }
+  const Bond& bondInfo(int bondId) const;
+  const std::vector<BondBreak>& breaks() const { return breaks_; }
+  double time() const { return time_; }
   std::size_t touchingCount() const;
   // Sum of the contact forces on one element (its reaction, for a wall).
   Vec2 contactForce(int slot) const;
@@ -81,6 +95,10 @@ class Assembly {
 
  private:
   void computeForces(double dt, const Vec2& gravity, bool commit);
+  void bondForces(double dt, const std::vector<Vec2>& v, const std::vector<double>& w);
+  // Closest surface points of two elements (a's, b's), for bonding; false when
+  // farther apart than `gap`.
+  bool closestPoints(int slotA, int slotB, double gap, Vec2& pa, Vec2& pb) const;
   void updatePairs();
   void integrate(double dt);
 
@@ -94,6 +112,10 @@ class Assembly {
   double skin_ = 0.0;
   long long builds_ = 0;
   StepTimes times_;
+  std::vector<Bond> bonds_;
+  std::vector<BondBreak> breaks_;
+  int nextBondId_ = 0;
+  double time_ = 0;
 };
 
 }  // namespace sf::dem

@@ -22,6 +22,7 @@ void registerOutputCommands(Tcl_Interp* interp, Session* session);
 void registerHelpCommand(Tcl_Interp* interp, Session* session);
 void registerMaterialCommands(Tcl_Interp* interp, Session* session);
 void registerElementCommands(Tcl_Interp* interp, Session* session);
+void registerBondCommands(Tcl_Interp* interp, Session* session);
 
 }  // namespace sf::tcl
 

@@ -1,0 +1,177 @@
+// Bonds of the Assembly: making them, their forces, and breaking.
+#include <algorithm>
+#include <cmath>
+
+#include "sandflow/core/error.hpp"
+#include "sandflow/dem/assembly.hpp"
+
+namespace sf::dem {
+namespace {
+
+Vec2 rotate(const Vec2& v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+}
+double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+Vec2 spin(double w, const Vec2& r) {
+  return Vec2(-w * r.y(), w * r.x());
+}
+
+}  // namespace
+
+bool Assembly::closestPoints(int a, int b, double gap, Vec2& pa, Vec2& pb) const {
+  const Bodies& B = bodies_;
+  const Shape &sa = *B.shape[a], &sb = *B.shape[b];
+  if (sa.type() == ShapeType::disc && sb.type() == ShapeType::disc) {
+    const double ra = static_cast<const Disc&>(sa).radius(),
+                 rb = static_cast<const Disc&>(sb).radius();
+    const Vec2 d = B.x[b] - B.x[a];
+    const double dist = d.norm();
+    if (dist - ra - rb > gap || dist == 0) return false;
+    const Vec2 n = d / dist;
+    pa = B.x[a] + ra * n;
+    pb = B.x[b] - rb * n;
+    return true;
+  }
+  const bool wallDisc = sa.type() == ShapeType::wall && sb.type() == ShapeType::disc;
+  const bool discWall = sa.type() == ShapeType::disc && sb.type() == ShapeType::wall;
+  if (wallDisc || discWall) {
+    const int w = wallDisc ? a : b, d = wallDisc ? b : a;
+    const auto [p, q] = static_cast<const Wall&>(*B.shape[w]).ends(B.x[w], B.angle[w]);
+    const double r = static_cast<const Disc&>(*B.shape[d]).radius();
+    const Vec2 seg = q - p, c = B.x[d];
+    const double t = std::clamp((c - p).dot(seg) / seg.squaredNorm(), 0.0, 1.0);
+    const Vec2 onWall = p + t * seg;
+    const double dist = (c - onWall).norm();
+    if (dist - r > gap || dist == 0) return false;
+    const Vec2 onDisc = c - r * (c - onWall) / dist;
+    pa = wallDisc ? onWall : onDisc;
+    pb = wallDisc ? onDisc : onWall;
+    return true;
+  }
+  // Other shapes bond where they overlap or touch.
+  Manifold m;
+  if (!collide(sa, {B.x[a], B.angle[a]}, sb, {B.x[b], B.angle[b]}, m)) return false;
+  pa = pb = m.point;
+  return true;
+}
+
+int Assembly::bond(int idA, int idB, double stiffness, double strength, double shearStrength) {
+  const int a = slot(idA), b = slot(idB);
+  if (a == b) throw Error("VALUE BOND", "an element cannot be bonded to itself");
+  for (const Bond& x : bonds_)
+    if ((x.idA == idA && x.idB == idB) || (x.idA == idB && x.idB == idA))
+      throw Error("EXISTS BOND", "elements " + std::to_string(idA) + " and " + std::to_string(idB) +
+                                     " are already bonded (bond " + std::to_string(x.id) + ")");
+  for (double v : {stiffness, strength, shearStrength})
+    if (!std::isfinite(v)) throw Error("VALUE BOND", "bond stiffness and strengths must be finite");
+  Vec2 pa, pb;
+  if (!closestPoints(a, b, std::numeric_limits<double>::infinity(), pa, pb))
+    throw Error("VALUE BOND", "elements " + std::to_string(idA) + " and " + std::to_string(idB) +
+                                  " cannot be bonded: they do not touch");
+  const Material &ma = materials_[bodies_.material[a]], &mb = materials_[bodies_.material[b]];
+  Bond x;
+  x.id = nextBondId_++;
+  x.idA = idA;
+  x.idB = idB;
+  x.anchorA = rotate(pa - bodies_.x[a], -bodies_.angle[a]);
+  x.anchorB = rotate(pb - bodies_.x[b], -bodies_.angle[b]);
+  Vec2 n = bodies_.x[b] - bodies_.x[a];
+  if ((pb - pa).norm() > 1e-12 * n.norm()) n = pb - pa;
+  x.normal0 = n.normalized();
+  x.length = (pb - pa).dot(x.normal0);
+  x.angleA0 = bodies_.angle[a];
+  x.angleB0 = bodies_.angle[b];
+  x.stiffness = stiffness >= 0 ? stiffness : std::min(ma.bondStiffness, mb.bondStiffness);
+  x.strength = strength >= 0 ? strength : std::min(ma.bondStrength, mb.bondStrength);
+  x.shearStrength = shearStrength >= 0 ? shearStrength : x.strength;
+  const double meff = 1.0 / (bodies_.invMass[a] + bodies_.invMass[b]);
+  const double zeta = combine(ma, mb).zeta;
+  x.damping = std::isfinite(meff) ? 2 * zeta * std::sqrt(meff * x.stiffness) : 0.0;
+  bonds_.push_back(x);
+  return x.id;
+}
+
+int Assembly::bondAll(const std::vector<int>& ids, double gap) {
+  if (!(gap >= 0) || !std::isfinite(gap)) throw Error("VALUE GAP", "-gap must be >= 0");
+  std::vector<int> slots;
+  if (ids.empty())
+    for (int s = 0; s < bodies_.size(); ++s) slots.push_back(s);
+  else
+    for (int id : ids) slots.push_back(slot(id));  // throws on an unknown id first
+  std::vector<Box> boxes;
+  for (int s : slots) {
+    Box b = bodies_.shape[s]->bounds(bodies_.x[s], bodies_.angle[s]);
+    boxes.push_back({b.lo - Vec2::Constant(gap / 2), b.hi + Vec2::Constant(gap / 2)});
+  }
+  Dess sorter;
+  std::vector<std::pair<int, int>> pairs;
+  sorter.findPairs(boxes, pairs);
+  int made = 0;
+  for (const auto& [i, j] : pairs) {
+    const int a = slots[i], b = slots[j];
+    const int idA = bodies_.id[a], idB = bodies_.id[b];
+    const bool bonded = std::any_of(bonds_.begin(), bonds_.end(), [&](const Bond& x) {
+      return (x.idA == idA && x.idB == idB) || (x.idA == idB && x.idB == idA);
+    });
+    const bool immovable = bodies_.invMass[a] == 0 && bodies_.invMass[b] == 0;
+    Vec2 pa, pb;
+    if (bonded || immovable || !canCollide(bodies_.shape[a]->type(), bodies_.shape[b]->type()) ||
+        !closestPoints(a, b, gap, pa, pb))
+      continue;
+    bond(std::min(idA, idB), std::max(idA, idB));
+    ++made;
+  }
+  return made;
+}
+
+void Assembly::unbond(int bondId) {
+  auto it =
+      std::find_if(bonds_.begin(), bonds_.end(), [&](const Bond& x) { return x.id == bondId; });
+  if (it == bonds_.end()) throw Error("LOOKUP BOND", "no bond with id " + std::to_string(bondId));
+  bonds_.erase(it);
+}
+
+const Bond& Assembly::bondInfo(int bondId) const {
+  auto it =
+      std::find_if(bonds_.begin(), bonds_.end(), [&](const Bond& x) { return x.id == bondId; });
+  if (it == bonds_.end()) throw Error("LOOKUP BOND", "no bond with id " + std::to_string(bondId));
+  return *it;
+}
+
+// Spring between the anchors: along the bond's normal (which turns with the
+// mean rotation of the two elements) it resists stretching from the rest
+// separation; across it, the anchors' sideways offset. Damped like a contact.
+void Assembly::bondForces(double dt, const std::vector<Vec2>& v, const std::vector<double>& w) {
+  Bodies& B = bodies_;
+  std::vector<Bond> kept;
+  kept.reserve(bonds_.size());
+  for (Bond& x : bonds_) {
+    const int a = B.slot(x.idA), b = B.slot(x.idB);
+    const Vec2 ra = rotate(x.anchorA, B.angle[a]), rb = rotate(x.anchorB, B.angle[b]);
+    const Vec2 pa = B.x[a] + ra, pb = B.x[b] + rb;
+    const Vec2 n = rotate(x.normal0, 0.5 * ((B.angle[a] - x.angleA0) + (B.angle[b] - x.angleB0)));
+    const Vec2 d = pb - pa;
+    const double stretch = d.dot(n) - x.length;
+    const Vec2 offset = d - d.dot(n) * n;
+    const Vec2 vrel = (v[b] + spin(w[b], rb)) - (v[a] + spin(w[a], ra));
+    const double tension = x.stiffness * stretch;
+    const double shear = x.stiffness * offset.norm();
+    if (tension > x.strength || shear > x.shearStrength) {
+      breaks_.push_back({time_ + dt, 0.5 * (pa + pb), std::atan2(n.y(), n.x()), x.id, x.idA, x.idB,
+                         tension > x.strength});
+      continue;
+    }
+    x.force = -x.stiffness * (stretch * n + offset) - x.damping * vrel;
+    B.force[a] -= x.force;
+    B.force[b] += x.force;
+    B.torque[a] -= cross(ra, x.force);
+    B.torque[b] += cross(rb, x.force);
+    kept.push_back(x);
+  }
+  bonds_.swap(kept);
+}
+
+}  // namespace sf::dem

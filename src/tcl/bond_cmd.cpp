@@ -1,0 +1,178 @@
+// bond create|auto|ids|info|delete|broken|help
+#include <limits>
+
+#include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/session.hpp"
+
+namespace sf::tcl {
+namespace {
+
+Session& sessionOf(ClientData data) {
+  return *static_cast<Session*>(data);
+}
+
+const OptionSpec kCreateOptions[] = {
+    {"-stiffness", "k", "bond stiffness (default: the materials' -bondstiffness, the smaller)"},
+    {"-strength", "s", "tensile strength (default: the materials' -bondstrength, the smaller)"},
+    {"-shearstrength", "s", "shear strength (default: the tensile strength)"},
+    {nullptr, nullptr, nullptr}};
+const OptionSpec kAutoOptions[] = {{"-elements", "IDS", "only among these elements (default all)"},
+                                   {"-gap", "g", "largest surface gap bonded (default 0)"},
+                                   {nullptr, nullptr, nullptr}};
+const OptionSpec kBrokenOptions[] = {{"-since", "t", "only breaks at or after time t"},
+                                     {nullptr, nullptr, nullptr}};
+
+int BondCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc < 3 || objc % 2 == 0) {
+    Tcl_WrongNumArgs(interp, 1, objv, "ID1 ID2 ?-stiffness k? ?-strength s? ?-shearstrength s?");
+    return TCL_ERROR;
+  }
+  int a = 0, b = 0;
+  if (!getInt(interp, objv[1], "ID1", a) || !getInt(interp, objv[2], "ID2", b)) return TCL_ERROR;
+  double v[3] = {-1, -1, -1};
+  if (!parseOptions(interp, objc, objv, 3, kCreateOptions, [&](int k, Tcl_Obj* o) {
+        if (!getDouble(interp, o, kCreateOptions[k].name, v[k])) return false;
+        if (v[k] < 0)
+          return reject(
+              interp, "VALUE BOND",
+              std::string(kCreateOptions[k].name) + " must be >= 0, got " + formatNumber(v[k]));
+        return true;
+      }))
+    return TCL_ERROR;
+  return guarded(interp, [&] {
+    Tcl_SetObjResult(
+        interp, Tcl_NewIntObj(sessionOf(data).manager.assembly().bond(a, b, v[0], v[1], v[2])));
+    return TCL_OK;
+  });
+}
+
+int BondAuto(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc % 2 == 0) {
+    Tcl_WrongNumArgs(interp, 1, objv, "?-elements IDS? ?-gap g?");
+    return TCL_ERROR;
+  }
+  std::vector<int> ids;
+  double gap = 0;
+  if (!parseOptions(interp, objc, objv, 1, kAutoOptions, [&](int k, Tcl_Obj* o) {
+        if (k == 1) {
+          if (!getDouble(interp, o, "-gap", gap)) return false;
+          if (gap < 0)
+            return reject(interp, "VALUE GAP", "-gap must be >= 0, got " + formatNumber(gap));
+          return true;
+        }
+        int n = 0;
+        Tcl_Obj** items = nullptr;
+        if (Tcl_ListObjGetElements(interp, o, &n, &items) != TCL_OK) return false;
+        ids.clear();
+        for (int i = 0; i < n; ++i) {
+          int id = 0;
+          if (!getInt(interp, items[i], "-elements", id)) return false;
+          ids.push_back(id);
+        }
+        if (ids.empty()) return reject(interp, "VALUE ELEMENTS", "-elements is empty");
+        return true;
+      }))
+    return TCL_ERROR;
+  return guarded(interp, [&] {
+    Tcl_SetObjResult(interp, Tcl_NewIntObj(sessionOf(data).manager.assembly().bondAll(ids, gap)));
+    return TCL_OK;
+  });
+}
+
+int BondIds(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, "");
+    return TCL_ERROR;
+  }
+  Tcl_Obj* l = Tcl_NewListObj(0, nullptr);
+  for (const dem::Bond& b : sessionOf(data).manager.assembly().bonds())
+    Tcl_ListObjAppendElement(nullptr, l, Tcl_NewIntObj(b.id));
+  Tcl_SetObjResult(interp, l);
+  return TCL_OK;
+}
+
+bool getBondId(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int& id) {
+  if (objc != 2) {
+    Tcl_WrongNumArgs(interp, 1, objv, "BID");
+    return false;
+  }
+  return getInt(interp, objv[1], "BID", id);
+}
+
+int BondInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  int id = 0;
+  if (!getBondId(interp, objc, objv, id)) return TCL_ERROR;
+  return guarded(interp, [&] {
+    const dem::Bond& b = sessionOf(data).manager.assembly().bondInfo(id);
+    Tcl_Obj* ids[2] = {Tcl_NewIntObj(b.idA), Tcl_NewIntObj(b.idB)};
+    Tcl_SetObjResult(interp, newDict({{"id", Tcl_NewIntObj(b.id)},
+                                      {"elements", Tcl_NewListObj(2, ids)},
+                                      {"force", newVec2(b.force)},
+                                      {"stiffness", newDouble(b.stiffness)},
+                                      {"strength", newDouble(b.strength)},
+                                      {"shearstrength", newDouble(b.shearStrength)},
+                                      {"length", newDouble(b.length)}}));
+    return TCL_OK;
+  });
+}
+
+int BondDelete(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  int id = 0;
+  if (!getBondId(interp, objc, objv, id)) return TCL_ERROR;
+  return guarded(interp, [&] {
+    sessionOf(data).manager.assembly().unbond(id);
+    return TCL_OK;
+  });
+}
+
+int BondBroken(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1 && objc != 3) {
+    Tcl_WrongNumArgs(interp, 1, objv, "?-since t?");
+    return TCL_ERROR;
+  }
+  double since = -std::numeric_limits<double>::infinity();
+  if (objc == 3) {
+    if (optionIndex(interp, objv[1], kBrokenOptions) < 0) return TCL_ERROR;
+    if (!getDouble(interp, objv[2], "-since", since)) return TCL_ERROR;
+  }
+  Tcl_Obj* l = Tcl_NewListObj(0, nullptr);
+  for (const dem::BondBreak& e : sessionOf(data).manager.assembly().breaks()) {
+    if (e.time < since) continue;
+    Tcl_Obj* item[4] = {newDouble(e.time), newDouble(e.at.x()), newDouble(e.at.y()),
+                        newDouble(e.angle)};
+    Tcl_ListObjAppendElement(nullptr, l, Tcl_NewListObj(4, item));
+  }
+  Tcl_SetObjResult(interp, l);
+  return TCL_OK;
+}
+
+int BondHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, "");
+    return TCL_ERROR;
+  }
+  std::string text = helpText(
+      "bond",
+      {"create ID1 ID2 ?-stiffness k? ?-strength s? ?-shearstrength s?   -> bond id",
+       "auto ?-elements IDS? ?-gap g?   -> number of bonds made", "ids", "info BID", "delete BID",
+       "broken ?-since t?   -> list of {time x y angle} break events", "help"},
+      kCreateOptions);
+  Tcl_SetObjResult(interp, newString(text));
+  return TCL_OK;
+}
+
+}  // namespace
+
+void registerBondCommands(Tcl_Interp* interp, Session* session) {
+  makeEnsemble(interp, "::sf::bond",
+               {{"create", BondCreate},
+                {"auto", BondAuto},
+                {"ids", BondIds},
+                {"info", BondInfo},
+                {"delete", BondDelete},
+                {"broken", BondBroken},
+                {"help", BondHelp}},
+               session);
+}
+
+}  // namespace sf::tcl
