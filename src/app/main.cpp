@@ -16,7 +16,7 @@ int appInit(Tcl_Interp* interp) {
   if (Sandflow_Init(interp) != TCL_OK) return TCL_ERROR;
   Tcl_StaticPackage(interp, "sandflow", Sandflow_Init, nullptr);
   Tcl_SetVar(interp, "tcl_rcFileName", "~/.sandflowrc", TCL_GLOBAL_ONLY);
-  return Tcl_Eval(interp, "namespace import ::sf::*");
+  return Tcl_Eval(interp, "namespace import ::sf::*; ::sf::shareSource");
 }
 
 void setArgv(Tcl_Interp* interp, const char* argv0, int argc, char** argv) {

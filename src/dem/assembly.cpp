@@ -70,6 +70,7 @@ int Assembly::add(ElementDef def) {
 
 void Assembly::remove(int id) {
   bodies_.swapRemove(slot(id));
+  std::erase_if(sources_, [&](const Source& x) { return x.id == id; });
   std::erase_if(bonds_, [&](const Bond& x) { return x.idA == id || x.idB == id; });
   touched();
 }
@@ -90,7 +91,8 @@ double Assembly::criticalTimestep() const {
   for (int s = 0; s < bodies_.size(); ++s) {
     const Material& m = materials_[bodies_.material[s]];
     kMax = std::max({kMax, m.kn, m.ks});
-    if (bodies_.invMass[s] > 0) mMin = std::min(mMin, bodies_.mass[s]);
+    // Sources count: their clones will be free.
+    if (bodies_.invMass[s] > 0 || bodies_.ghost[s]) mMin = std::min(mMin, bodies_.mass[s]);
   }
   if (!std::isfinite(mMin) || kMax <= 0) return std::numeric_limits<double>::infinity();
   return 2.0 * std::sqrt(mMin / kMax);
@@ -154,6 +156,7 @@ void Assembly::updatePairs() {
   next.reserve(pairs.size());
   for (const auto& [a, b] : pairs) {
     if (!canCollide(bodies_.shape[a]->type(), bodies_.shape[b]->type())) continue;
+    if (bodies_.ghost[a] || bodies_.ghost[b]) continue;
     const bool immovable = bodies_.invMass[a] == 0 && bodies_.invInertia[a] == 0 &&
                            bodies_.invMass[b] == 0 && bodies_.invInertia[b] == 0;
     if (immovable) continue;
@@ -346,6 +349,7 @@ void Assembly::step(double dt, const Vec2& gravity) {
   t0 = Clock::now();
   integrate(dt);
   time_ += dt;
+  if (!sources_.empty()) spawnClones();
   times_.integrate += since(t0);
 }
 

@@ -18,6 +18,7 @@ void Bodies::push(int elementId) {
     a->push_back(0.0);
   hold.push_back(0);
   started.push_back(0);
+  ghost.push_back(0);
 }
 
 void Bodies::swapRemove(int s) {
@@ -36,6 +37,7 @@ void Bodies::swapRemove(int s) {
     move(*a);
   move(hold);
   move(started);
+  move(ghost);
   if (s != last) slotOf[id[s]] = s;
 }
 

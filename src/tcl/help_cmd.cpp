@@ -15,6 +15,7 @@ constexpr const char* kHelp =
     "  ellipse   ellipse create -center {x y} -axes {a b} ?-sides N? ...\n"
     "  element   any element: configure, cget, info, ids, delete, next\n"
     "  bond      bonds (cementation): create, auto, ids, info, delete, broken\n"
+    "  source    sources (elements that clone themselves): create, delete, ids, info\n"
     "  sim       settings and state: configure -timestep -threads -gravity -integrator, info\n"
     "  run N ?-every K script?   advance N steps\n"
     "  step      advance one step\n"

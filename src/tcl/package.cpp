@@ -15,6 +15,18 @@ namespace eval ::sf {
     proc warn {message} { puts stderr "sandflow warning: $message" }
   }
   namespace export lattice sim run step reset output help material disc wall polygon ellipse element bond
+  # "source" is also Tcl's command to read a file: ::sf::source is not exported;
+  # the application installs a global "source" that serves both (sf::shareSource).
+  proc shareSource {} {
+    if {[info commands ::sf::TclSource] ne ""} return
+    rename ::source ::sf::TclSource
+    proc ::source {args} {
+      if {[llength $args] >= 1 && [lindex $args 0] in {create delete ids info help}} {
+        tailcall ::sf::source {*}$args
+      }
+      tailcall ::sf::TclSource {*}$args
+    }
+  }
 }
 )tcl";
 
@@ -50,6 +62,7 @@ extern "C" int Sandflow_Init(Tcl_Interp* interp) {
   registerMaterialCommands(interp, session);
   registerElementCommands(interp, session);
   registerBondCommands(interp, session);
+  registerSourceCommands(interp, session);
   if (Tcl_Eval(interp, kWarnProc) != TCL_OK) return TCL_ERROR;
   return Tcl_PkgProvide(interp, "sandflow", SANDFLOW_VERSION);
 }

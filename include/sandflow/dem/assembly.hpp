@@ -40,6 +40,19 @@ struct Contact {
   Vec2 force = Vec2::Zero();  // total contact force on b (on a: the opposite)
 };
 
+// A source (physics.md §4): a held element that touches nothing and clones
+// itself whenever nothing overlaps it; each clone is free, starts at rest,
+// inherits the applied force and gets the source's body acceleration.
+struct Source {
+  int id;               // the template element
+  Vec2 acceleration;    // given to each clone
+  double interval = 0;  // least time between clones
+  int limit = -1;       // clones to make (< 0: no limit)
+  int made = 0;
+  double last = -1e300;  // time of the last clone
+  std::vector<int> clones;
+};
+
 struct StepTimes {
   double sort = 0, narrow = 0, integrate = 0;
 };
@@ -84,6 +97,11 @@ class Assembly {
   const std::vector<Bond>& bonds() const { return bonds_; }
   const Bond& bondInfo(int bondId) const;
   const std::vector<BondBreak>& breaks() const { return breaks_; }
+
+  // Sources.
+  void makeSource(int id, const Vec2& acceleration, double interval, int limit);
+  void removeSource(int id);
+  const std::vector<Source>& sources() const { return sources_; }
   double time() const { return time_; }
   std::size_t touchingCount() const;
   // Sum of the contact forces on one element (its reaction, for a wall).
@@ -95,6 +113,8 @@ class Assembly {
 
  private:
   void computeForces(double dt, const Vec2& gravity, bool commit);
+  void spawnClones();
+  bool overlapsAnything(int slot) const;
   void bondForces(double dt, const std::vector<Vec2>& v, const std::vector<double>& w);
   // Closest surface points of two elements (a's, b's), for bonding; false when
   // farther apart than `gap`.
@@ -114,6 +134,7 @@ class Assembly {
   StepTimes times_;
   std::vector<Bond> bonds_;
   std::vector<BondBreak> breaks_;
+  std::vector<Source> sources_;
   int nextBondId_ = 0;
   double time_ = 0;
 };

@@ -22,6 +22,7 @@ struct Bodies {
   std::vector<double> mass, inertia, invMass, invInertia;
   std::vector<std::uint8_t> hold;     // Hold bits: those degrees of freedom keep v / w
   std::vector<std::uint8_t> started;  // half-step velocity initialised
+  std::vector<std::uint8_t> ghost;    // a source's template: touches nothing
 
   int size() const { return int(id.size()); }
   int slot(int elementId) const;  // -1 if none

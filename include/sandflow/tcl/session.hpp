@@ -23,6 +23,7 @@ void registerHelpCommand(Tcl_Interp* interp, Session* session);
 void registerMaterialCommands(Tcl_Interp* interp, Session* session);
 void registerElementCommands(Tcl_Interp* interp, Session* session);
 void registerBondCommands(Tcl_Interp* interp, Session* session);
+void registerSourceCommands(Tcl_Interp* interp, Session* session);
 
 }  // namespace sf::tcl
 
