@@ -86,11 +86,28 @@ void Assembly::updateMass(int s) {
   bodies_.invInertia[s] = (h & holdRotation) ? 0.0 : 1.0 / bodies_.inertia[s];
 }
 
+double Assembly::curvatureRadius(int s) const {
+  const Shape& shape = *bodies_.shape[s];
+  return shape.type() == ShapeType::wall ? std::numeric_limits<double>::infinity()
+                                         : shape.contactSize();
+}
+
+double Assembly::effectiveRadius(int a, int b) const {
+  const double ra = curvatureRadius(a), rb = curvatureRadius(b);
+  if (!std::isfinite(ra)) return rb;
+  if (!std::isfinite(rb)) return ra;
+  return ra * rb / (ra + rb);
+}
+
 double Assembly::criticalTimestep() const {
   double mMin = std::numeric_limits<double>::infinity(), kMax = 0.0;
   for (int s = 0; s < bodies_.size(); ++s) {
     const Material& m = materials_[bodies_.material[s]];
-    kMax = std::max({kMax, m.kn, m.ks});
+    // Hertz: the stiffness at an overlap of 1% of the element's size.
+    const double r = curvatureRadius(s);
+    kMax = std::max(kMax, m.law == ContactLaw::hertz && std::isfinite(r)
+                              ? 8.0 * m.youngs / (2 * (1 + m.poisson)) * std::sqrt(r * 0.01 * r)
+                              : std::max(m.kn, m.ks));
     // Sources count: their clones will be free.
     if (bodies_.invMass[s] > 0 || bodies_.ghost[s]) mMin = std::min(mMin, bodies_.mass[s]);
   }
@@ -210,8 +227,15 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
     const double vn = vrel.dot(nrm);
     const Vec2 vt = vrel - vn * nrm;
     const double meff = 1.0 / (b.invMass[i] + b.invMass[j]);
-    const double cn = law.damping >= 0 ? law.damping : 2.0 * law.zeta * std::sqrt(meff * law.kn);
-    const double fn = law.kn * m.overlap - cn * vn;  // along the normal, on j
+    double kn = law.kn, ks = law.ks, fElastic = law.kn * m.overlap;
+    if (law.hertz) {  // stiffnesses grow with the contact radius sqrt(R* d)
+      const double root = std::sqrt(effectiveRadius(i, j) * m.overlap);
+      fElastic = 4.0 / 3.0 * law.effectiveYoungs * root * m.overlap;
+      kn = 2.0 * law.effectiveYoungs * root;
+      ks = 8.0 * law.effectiveShear * root;
+    }
+    const double cn = law.damping >= 0 ? law.damping : 2.0 * law.zeta * std::sqrt(meff * kn);
+    const double fn = fElastic - cn * vn;  // along the normal, on j
 
     // Incremental shear spring, kept in the plane of the contact as it turns.
     Vec2 shear = c.touching ? c.shear : Vec2::Zero();
@@ -219,10 +243,13 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
     shear -= shear.dot(nrm) * nrm;
     const double left = shear.norm();
     if (left > 0) shear *= kept / left;
-    shear -= law.ks * dt * vt;
+    shear -= ks * dt * vt;
     const double ct = 0.5 * cn;
     Vec2 ft = shear - ct * vt;
-    const double cap = law.friction * std::abs(fn), ftn = ft.norm();
+    // Friction bears on compression only: near separation the damping can make
+    // fn tensile, and |fn| there would add friction impulse (5% too much spin
+    // in an oblique impact).
+    const double cap = law.friction * std::max(fn, 0.0), ftn = ft.norm();
     if (ftn > cap) {  // sliding: the spring holds what friction allows
       ft *= cap / ftn;
       shear = ft + ct * vt;

@@ -30,6 +30,9 @@ void validate(const Material& m) {
   require(finite(m.bondStiffness) && m.bondStiffness >= 0, "-bondstiffness", ">= 0",
           m.bondStiffness);
   require(finite(m.bondStrength) && m.bondStrength >= 0, "-bondstrength", ">= 0", m.bondStrength);
+  require(finite(m.youngs) && m.youngs > 0, "-youngs", "> 0", m.youngs);
+  require(finite(m.poisson) && m.poisson > -1 && m.poisson < 0.5, "-poisson", "between -1 and 0.5",
+          m.poisson);
 }
 
 double dampingRatio(double e) {
@@ -47,6 +50,11 @@ PairLaw combine(const Material& a, const Material& b) {
   law.friction = std::min(a.friction, b.friction);
   law.zeta = 0.5 * (dampingRatio(a.restitution) + dampingRatio(b.restitution));
   law.damping = (a.damping >= 0 && b.damping >= 0) ? 0.5 * (a.damping + b.damping) : -1.0;
+  law.hertz = a.law == ContactLaw::hertz || b.law == ContactLaw::hertz;
+  law.effectiveYoungs =
+      1.0 / ((1 - a.poisson * a.poisson) / a.youngs + (1 - b.poisson * b.poisson) / b.youngs);
+  const double ga = a.youngs / (2 * (1 + a.poisson)), gb = b.youngs / (2 * (1 + b.poisson));
+  law.effectiveShear = 1.0 / ((2 - a.poisson) / ga + (2 - b.poisson) / gb);
   return law;
 }
 

@@ -5,7 +5,19 @@
 namespace sf::tcl {
 namespace {
 
-enum Opt { kDensity, kKn, kKs, kFriction, kRestitution, kDamping, kBondStiffness, kBondStrength };
+enum Opt {
+  kDensity,
+  kKn,
+  kKs,
+  kFriction,
+  kRestitution,
+  kDamping,
+  kBondStiffness,
+  kBondStrength,
+  kLaw,
+  kYoungs,
+  kPoisson
+};
 
 const OptionSpec kOptions[] = {
     {"-density", "rho", "mass per unit volume (mass = rho x area, per unit thickness)"},
@@ -16,6 +28,9 @@ const OptionSpec kOptions[] = {
     {"-damping", "c", "fixed normal damping coefficient instead of -restitution"},
     {"-bondstiffness", "k", "stiffness of bonds made of this material"},
     {"-bondstrength", "s", "force at which such bonds break"},
+    {"-law", "linear|hertz", "contact law: linear spring-dashpot (default) or Hertz-Mindlin"},
+    {"-youngs", "E", "Young's modulus (Hertz-Mindlin)"},
+    {"-poisson", "nu", "Poisson's ratio (Hertz-Mindlin)"},
     {nullptr, nullptr, nullptr}};
 
 Session& sessionOf(ClientData data) {
@@ -38,14 +53,26 @@ Tcl_Obj* optionValue(const dem::Material& m, int k) {
       return m.damping >= 0 ? newDouble(m.damping) : Tcl_NewObj();
     case kBondStiffness:
       return newDouble(m.bondStiffness);
-    default:
+    case kBondStrength:
       return newDouble(m.bondStrength);
+    case kLaw:
+      return Tcl_NewStringObj(dem::contactLawNames[int(m.law)], -1);
+    case kYoungs:
+      return newDouble(m.youngs);
+    default:
+      return newDouble(m.poisson);
   }
 }
 
 bool applyOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first,
                   dem::Material& m) {
   return parseOptions(interp, objc, objv, first, kOptions, [&](int k, Tcl_Obj* v) {
+    if (k == kLaw) {
+      int law = 0;
+      if (!getChoice(interp, v, "law", dem::contactLawNames, law)) return false;
+      m.law = static_cast<dem::ContactLaw>(law);
+      return true;
+    }
     double d = 0;
     if (!getDouble(interp, v, kOptions[k].name, d)) return false;
     switch (k) {
@@ -72,8 +99,14 @@ bool applyOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first
       case kBondStiffness:
         m.bondStiffness = d;
         break;
-      default:
+      case kBondStrength:
         m.bondStrength = d;
+        break;
+      case kYoungs:
+        m.youngs = d;
+        break;
+      default:
+        m.poisson = d;
         break;
     }
     return true;

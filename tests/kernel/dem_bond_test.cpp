@@ -86,7 +86,7 @@ TEST(DemBond, RefusesSelfDuplicateAndDistantBonds) {
   far.x = Vec2(1, 1);
   const int id = p.a.add(std::move(far));
   EXPECT_NO_THROW(p.a.bond(p.left, id));  // bond() bonds at any distance when asked by id
-  EXPECT_EQ(p.a.bondAll({}, 1e-4), 0);     // auto: only pairs within the gap (already bonded)
+  EXPECT_EQ(p.a.bondAll({}, 1e-4), 0);    // auto: only pairs within the gap (already bonded)
 }
 
 TEST(DemBond, DeletingAnElementRemovesItsBonds) {

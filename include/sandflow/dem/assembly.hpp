@@ -114,6 +114,8 @@ class Assembly {
  private:
   void computeForces(double dt, const Vec2& gravity, bool commit);
   void spawnClones();
+  double curvatureRadius(int slot) const;
+  double effectiveRadius(int a, int b) const;
   bool overlapsAnything(int slot) const;
   void bondForces(double dt, const std::vector<Vec2>& v, const std::vector<double>& w);
   // Closest surface points of two elements (a's, b's), for bonding; false when

@@ -5,8 +5,12 @@
 
 namespace sf::dem {
 
+enum class ContactLaw { linear = 0, hertz = 1 };
+inline constexpr const char* contactLawNames[] = {"linear", "hertz", nullptr};
+
 struct Material {
   std::string name;
+  ContactLaw law = ContactLaw::linear;
   double density = 2650.0;
   double kn = 1e5;           // normal contact stiffness (force per overlap, per unit thickness)
   double ks = 1e5;           // tangential stiffness
@@ -15,6 +19,8 @@ struct Material {
   double damping = -1.0;     // ... or a fixed normal damping coefficient when >= 0
   double bondStiffness = 1e5;
   double bondStrength = 1e3;
+  double youngs = 70e9;  // Hertz-Mindlin: Young's modulus ...
+  double poisson = 0.3;  // ... and Poisson's ratio
 };
 
 // Throws sf::Error naming the option when a value is out of range.
@@ -27,8 +33,13 @@ double dampingRatio(double restitution);
 // Parameters of the contact between two materials: stiffnesses combine in
 // series scaled so that equal materials keep their own value (2 k1 k2/(k1+k2)),
 // friction takes the smaller, damping ratios the mean.
+// Hertz-Mindlin (either material hertz) uses the sphere law that 2D codes
+// such as LAMMPS use: Fn = 4/3 E* sqrt(R* d) d, tangential stiffness
+// 8 G* sqrt(R* d), with the effective moduli below.
 struct PairLaw {
   double kn, ks, friction, zeta, damping;  // damping < 0: use zeta
+  bool hertz = false;
+  double effectiveYoungs = 0, effectiveShear = 0;
 };
 PairLaw combine(const Material& a, const Material& b);
 
