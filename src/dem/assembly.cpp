@@ -86,6 +86,47 @@ void Assembly::updateMass(int s) {
   bodies_.invInertia[s] = (h & holdRotation) ? 0.0 : 1.0 / bodies_.inertia[s];
 }
 
+void Assembly::setPlateStress(int id, double stress) {
+  const int s = slot(id);
+  if (bodies_.shape[s]->type() != ShapeType::wall)
+    throw Error("VALUE STRESS", "-stress applies to walls only");
+  if (std::isinf(stress)) throw Error("VALUE STRESS", "-stress must be finite");
+  bodies_.stress[s] = stress;
+  if (!std::isnan(stress)) bodies_.hold[s] = holdX | holdY | holdRotation, updateMass(s);
+}
+
+// Servo: move each plate along its normal at a speed proportional to the
+// missing load, with a gain that would close 2% of the gap per step against
+// the stiffness of the contacts it has, and never faster than 1e-3 of the
+// smallest element per step (an unloaded plate would otherwise slam into the
+// specimen). A faster servo fights the contact dashpots: the plate's own speed
+// comes back as damping force and the loop rings.
+void Assembly::servoPlates(double dt) {
+  for (int s = 0; s < bodies_.size(); ++s) {
+    if (std::isnan(bodies_.stress[s])) continue;
+    const auto& wall = static_cast<const Wall&>(*bodies_.shape[s]);
+    const Vec2 inward(-std::sin(bodies_.angle[s]), std::cos(bodies_.angle[s]));
+    double load = 0, stiffness = 0;
+    for (const Contact& c : contacts_) {
+      if (!c.touching || (c.a != s && c.b != s)) continue;
+      const Vec2 onWall = c.a == s ? Vec2(-c.force) : c.force;
+      load -= onWall.dot(inward);  // the grains push the plate back
+      const int other = c.a == s ? c.b : c.a;
+      stiffness += combine(materials_[bodies_.material[s]], materials_[bodies_.material[other]]).kn;
+    }
+    const double target = bodies_.stress[s] * wall.length();
+    const double k = std::max(stiffness, materials_[bodies_.material[s]].kn);
+    double smallest = std::numeric_limits<double>::infinity();
+    for (int o = 0; o < bodies_.size(); ++o)
+      if (o != s) smallest = std::min(smallest, bodies_.shape[o]->contactSize());
+    const double limit = std::isfinite(smallest) ? 1e-3 * smallest / dt : 0.0;
+    const double speed = std::clamp(0.02 * (target - load) / (k * dt), -limit, limit);
+    bodies_.v[s] = speed * inward;
+    bodies_.vHalf[s] = bodies_.v[s];
+    bodies_.w[s] = bodies_.wHalf[s] = 0;
+  }
+}
+
 double Assembly::curvatureRadius(int s) const {
   const Shape& shape = *bodies_.shape[s];
   return shape.type() == ShapeType::wall ? std::numeric_limits<double>::infinity()
@@ -374,6 +415,7 @@ void Assembly::step(double dt, const Vec2& gravity) {
   }
   times_.narrow += since(t0);
   t0 = Clock::now();
+  servoPlates(dt);
   integrate(dt);
   time_ += dt;
   if (!sources_.empty()) spawnClones();

@@ -1,5 +1,7 @@
 #include "sandflow/dem/bodies.hpp"
 
+#include <limits>
+
 namespace sf::dem {
 
 int Bodies::slot(int elementId) const {
@@ -19,6 +21,7 @@ void Bodies::push(int elementId) {
   hold.push_back(0);
   started.push_back(0);
   ghost.push_back(0);
+  stress.push_back(std::numeric_limits<double>::quiet_NaN());
 }
 
 void Bodies::swapRemove(int s) {
@@ -38,6 +41,7 @@ void Bodies::swapRemove(int s) {
   move(hold);
   move(started);
   move(ghost);
+  move(stress);
   if (s != last) slotOf[id[s]] = s;
 }
 

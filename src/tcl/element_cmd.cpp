@@ -1,6 +1,7 @@
 // disc create, wall create, element configure|cget|info|ids|delete|next|help
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -29,7 +30,8 @@ enum Field {
   fId,
   fVertices,
   fAxes,
-  fSides
+  fSides,
+  fStress
 };
 
 // Every option an element command may take; each command's table is a subset.
@@ -50,6 +52,8 @@ const OptionSpec kAll[] = {
     {"-vertices", "{x1 y1 x2 y2 ...}", "corners of a convex polygon, in either order"},
     {"-axes", "{a b}", "semi-axes of the ellipse along its own x and y"},
     {"-sides", "N", "sides of the polygon that approximates the ellipse (default 32)"},
+    {"-stress", "s",
+     "a wall becomes a plate holding stress s (load s x length) on what it presses; {} stops"},
 };
 
 struct Table {
@@ -67,8 +71,8 @@ const Table& discTable() {
   return t;
 }
 const Table& wallTable() {
-  static const Table t{fFrom,     fTo,  fThickness, fMaterial,     fAngle,
-                       fVelocity, fFix, fForce,     fAcceleration, fId};
+  static const Table t{fFrom, fTo,    fThickness,    fMaterial, fAngle, fVelocity,
+                       fFix,  fForce, fAcceleration, fId,       fStress};
   return t;
 }
 const Table& polygonTable() {
@@ -81,8 +85,8 @@ const Table& ellipseTable() {
   return t;
 }
 const Table& configureTable() {
-  static const Table t{fCenter, fRadius,   fFrom, fTo,    fMaterial,
-                       fAngle,  fVelocity, fFix,  fForce, fAcceleration};
+  static const Table t{fCenter,   fRadius, fFrom,  fTo,           fMaterial, fAngle,
+                       fVelocity, fFix,    fForce, fAcceleration, fStress};
   return t;
 }
 
@@ -96,6 +100,7 @@ struct Edit {
   std::optional<std::vector<Vec2>> vertices;
   std::optional<Vec2> axes;
   std::optional<int> sides;
+  std::optional<double> stress;  // NaN: remove the servo
 };
 
 Session& sessionOf(ClientData data) {
@@ -206,6 +211,14 @@ bool parseEdit(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first, c
         e.sides = n;
         return true;
       }
+      case fStress:
+        if (Tcl_GetCharLength(v) == 0) {
+          e.stress = std::numeric_limits<double>::quiet_NaN();
+          return true;
+        }
+        if (!getDouble(interp, v, name, d)) return false;
+        e.stress = d;
+        return true;
       case fId: {
         int id = 0;
         if (!getInt(interp, v, name, id)) return false;
@@ -274,7 +287,13 @@ int WallCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
   def.angle = std::atan2(seg.y(), seg.x());
   def.hold = dem::holdX | dem::holdY | dem::holdRotation;  // walls stand still unless freed
   applyCommon(e, def);
-  return create(interp, s, std::move(def));
+  return guarded(interp, [&] {
+    dem::Assembly& a = s.manager.assembly();
+    const int id = a.add(std::move(def));
+    if (e.stress) a.setPlateStress(id, *e.stress);
+    Tcl_SetObjResult(interp, Tcl_NewIntObj(id));
+    return TCL_OK;
+  });
 }
 
 int PolygonCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
@@ -376,6 +395,8 @@ Tcl_Obj* fieldValue(const dem::Assembly& a, int s, Field f) {
       return triple(b.appliedForce[s], b.appliedTorque[s]);
     case fAcceleration:
       return newVec2(b.acceleration[s]);
+    case fStress:
+      return std::isnan(b.stress[s]) ? Tcl_NewObj() : newDouble(b.stress[s]);
     case fVertices:
     case fAxes:
     case fSides:
@@ -421,6 +442,8 @@ int ElementConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
   const ShapeType type = b.shape[slot]->type();
   if (e.radius && type != ShapeType::disc)
     return fail(interp, "VALUE RADIUS", "-radius applies to discs only");
+  if (e.stress && type != ShapeType::wall)
+    return fail(interp, "VALUE STRESS", "-stress applies to walls only");
   if ((e.from || e.to) && type != ShapeType::wall)
     return fail(interp, "VALUE WALL", "-from and -to apply to walls only");
   if ((e.from || e.to) && (e.center || e.angle))
@@ -452,6 +475,7 @@ int ElementConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
   if (e.hold) b.hold[slot] = *e.hold;
   if (e.force) b.appliedForce[slot] = e.force->head<2>(), b.appliedTorque[slot] = (*e.force)[2];
   if (e.acceleration) b.acceleration[slot] = *e.acceleration;
+  if (e.stress) a.setPlateStress(b.id[slot], *e.stress);
   b.started[slot] = 0;  // velocities or position set by hand: restart the half step
   a.updateMass(slot);
   a.touched();

@@ -98,6 +98,11 @@ class Assembly {
   const Bond& bondInfo(int bondId) const;
   const std::vector<BondBreak>& breaks() const { return breaks_; }
 
+  // Plates: a wall with a target stress s moves along its left normal (from ->
+  // to turned a quarter counter-clockwise) so that the contact load on it is
+  // s x length. NaN removes the servo (the wall keeps its last velocity).
+  void setPlateStress(int id, double stress);
+
   // Sources.
   void makeSource(int id, const Vec2& acceleration, double interval, int limit);
   void removeSource(int id);
@@ -114,6 +119,7 @@ class Assembly {
  private:
   void computeForces(double dt, const Vec2& gravity, bool commit);
   void spawnClones();
+  void servoPlates(double dt);
   double curvatureRadius(int slot) const;
   double effectiveRadius(int a, int b) const;
   bool overlapsAnything(int slot) const;

@@ -23,6 +23,7 @@ struct Bodies {
   std::vector<std::uint8_t> hold;     // Hold bits: those degrees of freedom keep v / w
   std::vector<std::uint8_t> started;  // half-step velocity initialised
   std::vector<std::uint8_t> ghost;    // a source's template: touches nothing
+  std::vector<double> stress;         // a plate's target stress (walls; NaN: none)
 
   int size() const { return int(id.size()); }
   int slot(int elementId) const;  // -1 if none
