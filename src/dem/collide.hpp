@@ -15,6 +15,11 @@ bool collidePolygonPolygon(const Shape& a, const Pose& pa, const Shape& b, const
 bool collideWallPolygon(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
                         Manifold& m);
 
+bool collideSuperquadric(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
+                         Manifold& m);
+bool collideWallSuperquadric(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
+                             Manifold& m);
+
 // The area-based law shared by polygon contacts: an overlap region of area A
 // whose boundaries cross along a chord of length L acts as a penetration
 // A / L along the chord's normal, at the region's centroid.

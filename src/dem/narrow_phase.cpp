@@ -23,6 +23,10 @@ struct Table {
     add(ShapeType::polygon, ShapeType::disc, collidePolygonDisc);
     add(ShapeType::polygon, ShapeType::polygon, collidePolygonPolygon);
     add(ShapeType::wall, ShapeType::polygon, collideWallPolygon);
+    add(ShapeType::superquadric, ShapeType::disc, collideSuperquadric);
+    add(ShapeType::superquadric, ShapeType::polygon, collideSuperquadric);
+    add(ShapeType::superquadric, ShapeType::superquadric, collideSuperquadric);
+    add(ShapeType::wall, ShapeType::superquadric, collideWallSuperquadric);
   }
 };
 

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "sandflow/dem/polygon.hpp"
+#include "sandflow/dem/superquadric.hpp"
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/session.hpp"
 
@@ -31,7 +32,8 @@ enum Field {
   fVertices,
   fAxes,
   fSides,
-  fStress
+  fStress,
+  fExponents
 };
 
 // Every option an element command may take; each command's table is a subset.
@@ -54,6 +56,7 @@ const OptionSpec kAll[] = {
     {"-sides", "N", "sides of the polygon that approximates the ellipse (default 32)"},
     {"-stress", "s",
      "a wall becomes a plate holding stress s (load s x length) on what it presses; {} stops"},
+    {"-exponents", "{m n}", "superquadric exponents, >= 1: |x/a|^m + |y/b|^n = 1"},
 };
 
 struct Table {
@@ -84,6 +87,11 @@ const Table& ellipseTable() {
                        fVelocity, fFix,  fForce, fAcceleration, fId};
   return t;
 }
+const Table& superquadricTable() {
+  static const Table t{fCenter,   fAxes, fExponents, fSides,        fMaterial, fAngle,
+                       fVelocity, fFix,  fForce,     fAcceleration, fId};
+  return t;
+}
 const Table& configureTable() {
   static const Table t{fCenter,   fRadius, fFrom,  fTo,           fMaterial, fAngle,
                        fVelocity, fFix,    fForce, fAcceleration, fStress};
@@ -98,7 +106,7 @@ struct Edit {
   std::optional<Eigen::Vector3d> velocity, force;
   std::optional<std::uint8_t> hold;
   std::optional<std::vector<Vec2>> vertices;
-  std::optional<Vec2> axes;
+  std::optional<Vec2> axes, exponents;
   std::optional<int> sides;
   std::optional<double> stress;  // NaN: remove the servo
 };
@@ -196,6 +204,12 @@ bool parseEdit(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first, c
         e.vertices = pts;
         return true;
       }
+      case fExponents:
+        if (!getVec2(interp, v, name, p)) return false;
+        if (!(p.x() >= 1 && p.y() >= 1))
+          return reject(interp, "VALUE EXPONENTS", "-exponents must both be >= 1 (convex)");
+        e.exponents = p;
+        return true;
       case fAxes:
         if (!getVec2(interp, v, name, p)) return false;
         if (!(p.x() > 0 && p.y() > 0))
@@ -341,6 +355,30 @@ int EllipseCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
   });
 }
 
+int SuperquadricCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  Session& s = sessionOf(data);
+  if (objc % 2 == 0) {
+    Tcl_WrongNumArgs(interp, 1, objv,
+                     "-center {x y} -axes {a b} -exponents {m n} ?-sides N? ?-option value ...?");
+    return TCL_ERROR;
+  }
+  Edit e;
+  if (!parseEdit(interp, objc, objv, 1, superquadricTable(), s.manager.assembly(), e))
+    return TCL_ERROR;
+  if (!e.center) return fail(interp, "VALUE CENTER", "superquadric create needs -center {x y}");
+  if (!e.axes) return fail(interp, "VALUE AXES", "superquadric create needs -axes {a b}");
+  if (!e.exponents)
+    return fail(interp, "VALUE EXPONENTS", "superquadric create needs -exponents {m n}");
+  return guarded(interp, [&] {
+    ElementDef def;
+    def.shape = std::make_unique<dem::Superquadric>(e.axes->x(), e.axes->y(), e.exponents->x(),
+                                                    e.exponents->y(), e.sides.value_or(32));
+    def.x = *e.center;
+    applyCommon(e, def);
+    return create(interp, s, std::move(def));
+  });
+}
+
 bool getElement(Tcl_Interp* interp, Tcl_Obj* obj, const dem::Assembly& a, int& slot) {
   int id = 0;
   if (!getInt(interp, obj, "ID", id)) return false;
@@ -395,6 +433,8 @@ Tcl_Obj* fieldValue(const dem::Assembly& a, int s, Field f) {
       return triple(b.appliedForce[s], b.appliedTorque[s]);
     case fAcceleration:
       return newVec2(b.acceleration[s]);
+    case fExponents:
+      return Tcl_NewObj();
     case fStress:
       return std::isnan(b.stress[s]) ? Tcl_NewObj() : newDouble(b.stress[s]);
     case fVertices:
@@ -534,6 +574,12 @@ int ElementInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
     }
     dictPut(d, "vertices", v);
   }
+  if (shape.type() == ShapeType::superquadric) {
+    const auto& q = static_cast<const dem::Superquadric&>(shape);
+    dictPut(d, "axes", newVec2(Vec2(q.a(), q.b())));
+    dictPut(d, "exponents", newVec2(Vec2(q.m(), q.n())));
+    dictPut(d, "sides", Tcl_NewIntObj(q.samples()));
+  }
   if (shape.type() == ShapeType::wall) {
     dictPut(d, "from", fieldValue(a, s, fFrom));
     dictPut(d, "to", fieldValue(a, s, fTo));
@@ -617,6 +663,13 @@ int EllipseHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[])
                   "help"},
                  ellipseTable());
 }
+int SuperquadricHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  return helpFor(interp, objc, objv, "superquadric",
+                 {"create -center {x y} -axes {a b} -exponents {m n} ?-sides N? ?-option value "
+                  "...?   -> id (outline sampled at N points, default 32)",
+                  "help"},
+                 superquadricTable());
+}
 int ElementHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   return helpFor(interp, objc, objv, "element",
                  {"configure ID ?-option value ...?", "cget ID -option",
@@ -633,6 +686,8 @@ void registerElementCommands(Tcl_Interp* interp, Session* session) {
   makeEnsemble(interp, "::sf::wall", {{"create", WallCreate}, {"help", WallHelp}}, session);
   makeEnsemble(interp, "::sf::polygon", {{"create", PolygonCreate}, {"help", PolygonHelp}},
                session);
+  makeEnsemble(interp, "::sf::superquadric",
+               {{"create", SuperquadricCreate}, {"help", SuperquadricHelp}}, session);
   makeEnsemble(interp, "::sf::ellipse", {{"create", EllipseCreate}, {"help", EllipseHelp}},
                session);
   makeEnsemble(interp, "::sf::element",

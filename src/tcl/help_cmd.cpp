@@ -13,6 +13,7 @@ constexpr const char* kHelp =
     "  wall      wall create -from {x y} -to {x y} ...  (a line element)\n"
     "  polygon   polygon create -vertices {x1 y1 ...} ...  (convex)\n"
     "  ellipse   ellipse create -center {x y} -axes {a b} ?-sides N? ...\n"
+    "  superquadric  superquadric create -center {x y} -axes {a b} -exponents {m n} ...\n"
     "  element   any element: configure, cget, info, ids, delete, next\n"
     "  bond      bonds (cementation): create, auto, ids, info, delete, broken\n"
     "  source    sources (elements that clone themselves): create, delete, ids, info\n"

@@ -14,7 +14,7 @@ namespace eval ::sf {
   if {[info commands ::sf::warn] eq ""} {
     proc warn {message} { puts stderr "sandflow warning: $message" }
   }
-  namespace export lattice sim run step reset output help material disc wall polygon ellipse element bond
+  namespace export lattice sim run step reset output help material disc wall polygon ellipse superquadric element bond
   # "source" is also Tcl's command to read a file: ::sf::source is not exported;
   # the application installs a global "source" that serves both (sf::shareSource).
   proc shareSource {} {
