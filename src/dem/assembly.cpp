@@ -330,6 +330,28 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
                   "the force on element " + std::to_string(b.id[s]) + " is not finite");
 }
 
+// Energy blow-up shows as an element in contact about to jump by more than
+// half its own size in one step (free flight may be that fast): stop before
+// moving anything.
+void Assembly::checkSpeeds(double dt) const {
+  const Bodies& b = bodies_;
+  std::vector<char> touching(b.size(), 0);
+  for (const Contact& c : contacts_)
+    if (c.touching) touching[c.a] = touching[c.b] = 1;
+  for (int s = 0; s < b.size(); ++s) {
+    if ((b.invMass[s] == 0 && b.invInertia[s] == 0) || !touching[s]) continue;
+    const Vec2 v = b.v[s] + dt * b.force[s] / b.mass[s];
+    const double w = std::abs(b.w[s] + dt * b.torque[s] / b.inertia[s]);
+    const double jump = (v.norm() + w * b.shape[s]->boundingRadius()) * dt;
+    const double size = b.shape[s]->contactSize();
+    if (jump > 0.5 * size || !std::isfinite(jump))
+      throw Error("UNSTABLE SPEED",
+                  "element " + std::to_string(b.id[s]) + " would move " + formatNumber(jump) +
+                      " in one step, more than half its size " + formatNumber(size) +
+                      ": the motion is blowing up (reduce the timestep)");
+  }
+}
+
 void Assembly::integrate(double dt) {
   Bodies& b = bodies_;
   const int n = b.size();
@@ -416,6 +438,7 @@ void Assembly::step(double dt, const Vec2& gravity) {
   times_.narrow += since(t0);
   t0 = Clock::now();
   servoPlates(dt);
+  checkSpeeds(dt);
   integrate(dt);
   time_ += dt;
   if (!sources_.empty()) spawnClones();

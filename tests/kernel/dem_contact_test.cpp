@@ -6,6 +6,7 @@
 #include <numbers>
 #include <random>
 
+#include "sandflow/core/error.hpp"
 #include "sandflow/dem/assembly.hpp"
 
 namespace sf::dem {
@@ -317,6 +318,36 @@ TEST(DemContact, ObliqueImpactTransitionFromSlidingToSticking) {
   EXPECT_LT(oblique(vn, 0.6 * transition, e, mu).spin / sliding, 0.95);
   EXPECT_NEAR(oblique(vn, 1.5 * transition, e, mu).spin / sliding, 1.0, 0.005);
   EXPECT_NEAR(oblique(vn, 4 * transition, e, mu).spin / sliding, 1.0, 0.005);
+}
+
+}  // namespace
+}  // namespace sf::dem
+
+namespace sf::dem {
+namespace {
+
+// A timestep far above the critical one makes a contact ring up: the watch
+// stops the step, names the elements, and leaves the state as it was.
+TEST(DemContact, BlowUpIsStoppedBeforeTheStateChanges) {
+  Assembly a;
+  a.materials().add(material(1.0, 0.5));
+  const int i = wall(a, Vec2(-1, 0), Vec2(1, 0));
+  const int j = disc(a, Vec2(0, 0.99e-3), 1e-3);  // resting on a floor under gravity
+  const double dt = a.criticalTimestep() * 1.5;   // unstable
+  Vec2 before[2];
+  bool stopped = false;
+  for (int s = 0; s < 1000 && !stopped; ++s) {
+    before[0] = a.bodies().x[a.slot(i)], before[1] = a.bodies().x[a.slot(j)];
+    try {
+      a.step(dt, Vec2(0, -9.81));
+    } catch (const Error& e) {
+      stopped = true;
+      EXPECT_EQ(std::string(e.code()).rfind("UNSTABLE", 0), 0u) << e.code();
+    }
+  }
+  ASSERT_TRUE(stopped);
+  EXPECT_EQ(a.bodies().x[a.slot(i)], before[0]);
+  EXPECT_EQ(a.bodies().x[a.slot(j)], before[1]);
 }
 
 }  // namespace

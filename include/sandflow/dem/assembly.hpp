@@ -120,6 +120,7 @@ class Assembly {
   void computeForces(double dt, const Vec2& gravity, bool commit);
   void spawnClones();
   void servoPlates(double dt);
+  void checkSpeeds(double dt) const;
   double curvatureRadius(int slot) const;
   double effectiveRadius(int a, int b) const;
   bool overlapsAnything(int slot) const;
