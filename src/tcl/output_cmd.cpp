@@ -18,13 +18,20 @@ int OutputVtk(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
   Session& s = sessionOf(data);
   const std::string prefix = Tcl_GetString(objv[1]);
   if (prefix.empty()) return fail(interp, "VALUE PREFIX", "PREFIX must not be empty");
-  if (!s.manager.hasLattice())
-    return fail(interp, "LOOKUP SCENE", "nothing to write: the scene has no lattice");
+  const bool elements = !s.manager.assembly().empty();
+  if (!s.manager.hasLattice() && !elements)
+    return fail(interp, "LOOKUP SCENE",
+                "nothing to write: the scene has no lattice and no elements");
   return guarded(interp, [&] {
-    const std::string file = prefix + ".vti";
-    io::writeLatticeVti(s.manager.lattice(), file);
     Tcl_Obj* files = Tcl_NewListObj(0, nullptr);
-    Tcl_ListObjAppendElement(nullptr, files, newString(file));
+    if (s.manager.hasLattice()) {
+      io::writeLatticeVti(s.manager.lattice(), prefix + ".vti");
+      Tcl_ListObjAppendElement(nullptr, files, newString(prefix + ".vti"));
+    }
+    if (elements) {
+      io::writeElementsVtp(s.manager.assembly(), prefix + ".vtp");
+      Tcl_ListObjAppendElement(nullptr, files, newString(prefix + ".vtp"));
+    }
     Tcl_SetObjResult(interp, files);
     return TCL_OK;
   });
