@@ -45,7 +45,7 @@ int OutputHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) 
   Tcl_SetObjResult(
       interp, newString(helpText("output",
                                  {"vtk PREFIX   -> files written: PREFIX.vti (lattice: density, "
-                                  "pressure, velocity, kind)",
+                                  "pressure, velocity, kind) and PREFIX.vtp (elements)",
                                   "help"},
                                  nullptr)));
   return TCL_OK;
