@@ -22,8 +22,11 @@ void Dess::findPairs(const std::vector<Box>& boxes, std::vector<std::pair<int, i
     }
   const double density[2] = {extent[0] / std::max(hi[0] - lo[0], 1e-300),
                              extent[1] / std::max(hi[1] - lo[1], 1e-300)};
-  const int axis = density[1] < density[0] ? 1 : 0;
-  if (int(order_.size()) != n) {
+  // Keep the axis unless the other is clearly better: a new axis means a full
+  // sort (insertion sort from another axis's order would be O(N^2)).
+  int axis = axis_;
+  if (density[1 - axis_] < 0.8 * density[axis_]) axis = 1 - axis_;
+  if (int(order_.size()) != n || axis != axis_) {
     order_.resize(n);
     std::iota(order_.begin(), order_.end(), 0);
     std::sort(order_.begin(), order_.end(),
@@ -43,18 +46,49 @@ void Dess::findPairs(const std::vector<Box>& boxes, std::vector<std::pair<int, i
     order_[m + 1] = e;
   }
 
+  // Sweeping one axis alone costs O(N^1.5) on a square domain (each box's
+  // range on the sweep axis holds a whole column). So the other axis is cut
+  // into strips about two typical boxes wide; each strip's list, read off the
+  // sorted order, is sorted too, and a box scans only its own strips. A pair
+  // that shares several strips is reported in the strip holding the higher of
+  // its two lower ends: exactly once.
   const int other = 1 - axis;
+  std::vector<double> width(n);
+  double lowest = boxes[0].lo[other];
+  for (int i = 0; i < n; ++i) {
+    width[i] = boxes[i].hi[other] - boxes[i].lo[other];
+    lowest = std::min(lowest, boxes[i].lo[other]);
+  }
+  std::nth_element(width.begin(), width.begin() + n / 2, width.end());
+  double stripWidth = 2 * width[n / 2];
+  double highest = lowest;
+  for (const Box& b : boxes) highest = std::max(highest, b.hi[other]);
+  if (!(stripWidth > 0) || (highest - lowest) / stripWidth > n) stripWidth = (highest - lowest) / n;
+  if (!(stripWidth > 0)) stripWidth = 1;
+  const int strips = int((highest - lowest) / stripWidth) + 1;
+  auto strip = [&](double v) { return std::min(strips - 1, int((v - lowest) / stripWidth)); };
+  members_.assign(strips, {});
   for (int k = 0; k < n; ++k) {
-    const int i = order_[k];
-    const Box& bi = boxes[i];
-    const double upper = bi.hi[axis];
-    for (int m = k + 1; m < n; ++m) {
-      const int j = order_[m];
-      const Box& bj = boxes[j];
-      if (bj.lo[axis] > upper) break;
-      ++checks_;
-      if (bj.lo[other] <= bi.hi[other] && bi.lo[other] <= bj.hi[other])
-        pairs.emplace_back(std::min(i, j), std::max(i, j));
+    const int e = order_[k];
+    for (int s = strip(boxes[e].lo[other]), last = strip(boxes[e].hi[other]); s <= last; ++s)
+      members_[s].push_back(e);
+  }
+  for (int s = 0; s < strips; ++s) {
+    const std::vector<int>& list = members_[s];
+    const int m = int(list.size());
+    for (int k = 0; k < m; ++k) {
+      const int i = list[k];
+      const Box& bi = boxes[i];
+      const double upper = bi.hi[axis];
+      for (int q = k + 1; q < m; ++q) {
+        const int j = list[q];
+        const Box& bj = boxes[j];
+        if (bj.lo[axis] > upper) break;
+        ++checks_;
+        if (bj.lo[other] <= bi.hi[other] && bi.lo[other] <= bj.hi[other] &&
+            strip(std::max(bi.lo[other], bj.lo[other])) == s)
+          pairs.emplace_back(std::min(i, j), std::max(i, j));
+      }
     }
   }
   std::sort(pairs.begin(), pairs.end());

@@ -6,6 +6,8 @@
 // other's range on that axis, so scanning forward from each element's own lower
 // end to its upper end finds each pair exactly once, whatever the mix of sizes:
 // a long wall pays for its own range, small grains do not pay for the wall.
+// The scan runs within strips of the other axis, which keeps it O(N) when
+// the domain is wide in both directions.
 #include <utility>
 #include <vector>
 
@@ -25,6 +27,7 @@ class Dess {
 
  private:
   std::vector<int> order_;
+  std::vector<std::vector<int>> members_;  // per strip, sorted like order_
   int axis_ = 0;
   long long checks_ = 0;
 };
