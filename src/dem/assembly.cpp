@@ -70,6 +70,7 @@ int Assembly::add(ElementDef def) {
 
 void Assembly::remove(int id) {
   bodies_.swapRemove(slot(id));
+  slotsMoved_ = true;
   std::erase_if(sources_, [&](const Source& x) { return x.id == id; });
   std::erase_if(bonds_, [&](const Bond& x) { return x.idA == id || x.idB == id; });
   touched();
@@ -84,6 +85,8 @@ void Assembly::updateMass(int s) {
   // A held degree of freedom moves as prescribed: to its contacts it is infinitely heavy.
   bodies_.invMass[s] = (h & holdX) && (h & holdY) ? 0.0 : 1.0 / m;
   bodies_.invInertia[s] = (h & holdRotation) ? 0.0 : 1.0 / bodies_.inertia[s];
+  bodies_.reach[s] = shape.boundingRadius();
+  bodies_.extent[s] = shape.contactSize();
 }
 
 void Assembly::setPlateStress(int id, double stress) {
@@ -118,7 +121,7 @@ void Assembly::servoPlates(double dt) {
     const double k = std::max(stiffness, materials_[bodies_.material[s]].kn);
     double smallest = std::numeric_limits<double>::infinity();
     for (int o = 0; o < bodies_.size(); ++o)
-      if (o != s) smallest = std::min(smallest, bodies_.shape[o]->contactSize());
+      if (o != s) smallest = std::min(smallest, bodies_.extent[o]);
     const double limit = std::isfinite(smallest) ? 1e-3 * smallest / dt : 0.0;
     const double speed = std::clamp(0.02 * (target - load) / (k * dt), -limit, limit);
     bodies_.v[s] = speed * inward;
@@ -189,15 +192,14 @@ void Assembly::updatePairs() {
   bool rebuild = !pairsValid_ || int(builtAt_.size()) != n;
   if (!rebuild)
     for (int s = 0; s < n && !rebuild; ++s) {
-      const double moved =
-          (bodies_.x[s] - builtAt_[s]).norm() +
-          bodies_.shape[s]->boundingRadius() * std::abs(bodies_.angle[s] - builtAngle_[s]);
+      const double moved = (bodies_.x[s] - builtAt_[s]).norm() +
+                           bodies_.reach[s] * std::abs(bodies_.angle[s] - builtAngle_[s]);
       rebuild = moved > 0.5 * skin_;
     }
   if (!rebuild) return;
 
   double smallest = std::numeric_limits<double>::infinity();
-  for (int s = 0; s < n; ++s) smallest = std::min(smallest, bodies_.shape[s]->contactSize());
+  for (int s = 0; s < n; ++s) smallest = std::min(smallest, bodies_.extent[s]);
   skin_ = std::isfinite(smallest) ? 0.2 * smallest : 0.0;
   std::vector<Box> boxes(n);
   for (int s = 0; s < n; ++s) {
@@ -207,9 +209,13 @@ void Assembly::updatePairs() {
   std::vector<std::pair<int, int>> pairs;
   dess_.findPairs(boxes, pairs);
 
+  // Contact history carries over by element ids. Both lists are sorted by slot
+  // pair, so while no slot has moved a merge does it; after a deletion, a map.
   std::unordered_map<std::uint64_t, Vec2> history;
-  for (const Contact& c : contacts_)
-    if (c.touching) history[pairKey(c.idA, c.idB)] = c.shear;
+  if (slotsMoved_)
+    for (const Contact& c : contacts_)
+      if (c.touching) history[pairKey(c.idA, c.idB)] = c.shear;
+  std::size_t old = 0;
   std::vector<Contact> next;
   next.reserve(pairs.size());
   for (const auto& [a, b] : pairs) {
@@ -219,13 +225,21 @@ void Assembly::updatePairs() {
                            bodies_.invMass[b] == 0 && bodies_.invInertia[b] == 0;
     if (immovable) continue;
     Contact c{a, b, bodies_.id[a], bodies_.id[b]};
-    if (auto it = history.find(pairKey(c.idA, c.idB)); it != history.end()) {
-      c.shear = it->second;
-      c.touching = true;
+    if (slotsMoved_) {
+      if (auto it = history.find(pairKey(c.idA, c.idB)); it != history.end())
+        c.shear = it->second, c.touching = true;
+    } else {
+      while (old < contacts_.size() &&
+             std::pair(contacts_[old].a, contacts_[old].b) < std::pair(a, b))
+        ++old;
+      if (old < contacts_.size() && contacts_[old].a == a && contacts_[old].b == b &&
+          contacts_[old].touching)
+        c.shear = contacts_[old].shear, c.touching = true;
     }
     next.push_back(c);
   }
   contacts_.swap(next);
+  slotsMoved_ = false;
   builtAt_ = bodies_.x;
   builtAngle_ = bodies_.angle;
   pairsValid_ = true;
@@ -248,8 +262,10 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
     for (int j = 0; j < nm; ++j) laws[i * nm + j] = combine(materials_[i], materials_[j]);
 
   const std::ptrdiff_t nc = std::ptrdiff_t(contacts_.size());
-  std::vector<Vec2> newShear(nc);
-  std::vector<char> excessive(nc, 0);
+  std::vector<Vec2>& newShear = scratchShear_;
+  std::vector<char>& excessive = scratchFlag_;
+  newShear.resize(nc);
+  excessive.assign(nc, 0);
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::ptrdiff_t k = 0; k < nc; ++k) {
     Contact& c = contacts_[k];
@@ -301,7 +317,7 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
     c.overlap = m.overlap;
     c.force = fn * nrm + ft;
     newShear[k] = shear;
-    const double size = std::min(b.shape[i]->contactSize(), b.shape[j]->contactSize());
+    const double size = std::min(b.extent[i], b.extent[j]);
     excessive[k] = m.overlap > maxOverlap * size || !c.force.allFinite();
   }
 
@@ -335,15 +351,16 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
 // moving anything.
 void Assembly::checkSpeeds(double dt) const {
   const Bodies& b = bodies_;
-  std::vector<char> touching(b.size(), 0);
+  std::vector<char>& touching = scratchTouch_;
+  touching.assign(b.size(), 0);
   for (const Contact& c : contacts_)
     if (c.touching) touching[c.a] = touching[c.b] = 1;
   for (int s = 0; s < b.size(); ++s) {
     if ((b.invMass[s] == 0 && b.invInertia[s] == 0) || !touching[s]) continue;
     const Vec2 v = b.v[s] + dt * b.force[s] / b.mass[s];
     const double w = std::abs(b.w[s] + dt * b.torque[s] / b.inertia[s]);
-    const double jump = (v.norm() + w * b.shape[s]->boundingRadius()) * dt;
-    const double size = b.shape[s]->contactSize();
+    const double jump = (v.norm() + w * b.reach[s]) * dt;
+    const double size = b.extent[s];
     if (jump > 0.5 * size || !std::isfinite(jump))
       throw Error("UNSTABLE SPEED",
                   "element " + std::to_string(b.id[s]) + " would move " + formatNumber(jump) +

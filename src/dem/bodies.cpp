@@ -15,8 +15,8 @@ void Bodies::push(int elementId) {
   shape.emplace_back();
   material.push_back(0);
   for (auto* a : {&x, &v, &vHalf, &force, &appliedForce, &acceleration}) a->push_back(Vec2::Zero());
-  for (auto* a :
-       {&angle, &w, &wHalf, &torque, &appliedTorque, &mass, &inertia, &invMass, &invInertia})
+  for (auto* a : {&angle, &w, &wHalf, &torque, &appliedTorque, &mass, &inertia, &invMass,
+                  &invInertia, &reach, &extent})
     a->push_back(0.0);
   hold.push_back(0);
   started.push_back(0);
@@ -35,8 +35,8 @@ void Bodies::swapRemove(int s) {
   move(shape);
   move(material);
   for (auto* a : {&x, &v, &vHalf, &force, &appliedForce, &acceleration}) move(*a);
-  for (auto* a :
-       {&angle, &w, &wHalf, &torque, &appliedTorque, &mass, &inertia, &invMass, &invInertia})
+  for (auto* a : {&angle, &w, &wHalf, &torque, &appliedTorque, &mass, &inertia, &invMass,
+                  &invInertia, &reach, &extent})
     move(*a);
   move(hold);
   move(started);

@@ -138,12 +138,17 @@ class Assembly {
   std::vector<Vec2> builtAt_;
   std::vector<double> builtAngle_;
   bool pairsValid_ = false;
+  bool slotsMoved_ = false;  // a deletion renumbered slots since the last pair build
   double skin_ = 0.0;
   long long builds_ = 0;
   StepTimes times_;
   std::vector<Bond> bonds_;
   std::vector<BondBreak> breaks_;
   std::vector<Source> sources_;
+  // Per-step scratch, kept to avoid allocating in the step.
+  std::vector<Vec2> scratchShear_;
+  std::vector<char> scratchFlag_;
+  mutable std::vector<char> scratchTouch_;
   int nextBondId_ = 0;
   double time_ = 0;
 };

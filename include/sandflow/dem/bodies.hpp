@@ -20,6 +20,7 @@ struct Bodies {
   std::vector<Vec2> x, v, vHalf, force, appliedForce, acceleration;
   std::vector<double> angle, w, wHalf, torque, appliedTorque;
   std::vector<double> mass, inertia, invMass, invInertia;
+  std::vector<double> reach, extent;  // cached: bounding radius and contact size of the shape
   std::vector<std::uint8_t> hold;     // Hold bits: those degrees of freedom keep v / w
   std::vector<std::uint8_t> started;  // half-step velocity initialised
   std::vector<std::uint8_t> ghost;    // a source's template: touches nothing
