@@ -1,14 +1,9 @@
 // The elements as VTK XML PolyData (.vtp): each element's outline as a polygon
 // (a wall as a line), with its id, shape type, velocity, spin and mass.
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <fstream>
 #include <numbers>
 #include <sstream>
 
-#include "sandflow/core/error.hpp"
 #include "sandflow/dem/polygon.hpp"
 #include "sandflow/dem/superquadric.hpp"
 #include "sandflow/io/vtk.hpp"
@@ -41,7 +36,7 @@ std::vector<Vec2> outline(const dem::Shape& s, const Vec2& x, double angle) {
 
 }  // namespace
 
-void writeElementsVtp(const dem::Assembly& assembly, const std::string& path) {
+void writeElementsVtp(const dem::Assembly& assembly, std::ostream& out) {
   const dem::Bodies& b = assembly.bodies();
   std::ostringstream points, connectivity, offsets, lineConn, lineOff, ids, kinds, vel, spin, mass;
   points.precision(17);
@@ -97,20 +92,7 @@ void writeElementsVtp(const dem::Assembly& assembly, const std::string& path) {
       << connectivity.str() << "</DataArray>\n"
       << "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">" << offsets.str()
       << "</DataArray>\n      </Polys>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
-  const std::string temporary = path + ".part";
-  {
-    std::ofstream out(temporary);
-    if (!out) throw Error("IO OPEN", "cannot write \"" + path + "\": " + std::strerror(errno));
-    out << xml.str();
-    if (!out.flush()) {
-      std::remove(temporary.c_str());
-      throw Error("IO WRITE", "writing \"" + path + "\" failed (disk full?)");
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw Error("IO WRITE", "cannot write \"" + path + "\": " + std::strerror(errno));
-  }
+  out << xml.str();
 }
 
 }  // namespace sf::io

@@ -6,7 +6,6 @@
 #include <sstream>
 #include <vector>
 
-#include "sandflow/core/error.hpp"
 #include "sandflow/io/vtk.hpp"
 
 namespace sf::io {
@@ -27,7 +26,7 @@ void append(std::vector<char>& out, T value) {
 
 }  // namespace
 
-void writeLatticeVti(const lb::Lattice& lattice, const std::string& path) {
+void writeLatticeVti(const lb::Lattice& lattice, std::ostream& out) {
   const int nx = lattice.nx(), ny = lattice.ny();
   const std::size_t n = lattice.nodes();
   Array density{"density", "Float64", 1, {}}, pressure{"pressure", "Float64", 1, {}},
@@ -70,27 +69,14 @@ void writeLatticeVti(const lb::Lattice& lattice, const std::string& path) {
   xml << "      </PointData>\n    </Piece>\n  </ImageData>\n"
       << "  <AppendedData encoding=\"raw\">\n   _";
 
-  const std::string temporary = path + ".part";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    if (!out) throw Error("IO OPEN", "cannot write \"" + path + "\": " + std::strerror(errno));
-    const std::string head = xml.str();
-    out.write(head.data(), std::streamsize(head.size()));
-    for (const Array* a : arrays) {
-      const std::uint64_t size = a->bytes.size();
-      out.write(reinterpret_cast<const char*>(&size), sizeof size);
-      out.write(a->bytes.data(), std::streamsize(a->bytes.size()));
-    }
-    out << "\n  </AppendedData>\n</VTKFile>\n";
-    if (!out.flush()) {
-      std::remove(temporary.c_str());
-      throw Error("IO WRITE", "writing \"" + path + "\" failed (disk full?)");
-    }
+  const std::string head = xml.str();
+  out.write(head.data(), std::streamsize(head.size()));
+  for (const Array* a : arrays) {
+    const std::uint64_t size = a->bytes.size();
+    out.write(reinterpret_cast<const char*>(&size), sizeof size);
+    out.write(a->bytes.data(), std::streamsize(a->bytes.size()));
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw Error("IO WRITE", "cannot write \"" + path + "\": " + std::strerror(errno));
-  }
+  out << "\n  </AppendedData>\n</VTKFile>\n";
 }
 
 }  // namespace sf::io

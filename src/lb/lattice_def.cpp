@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <cmath>
+#include <cstdio>
 
 #include "sandflow/core/error.hpp"
 
@@ -11,10 +13,22 @@ namespace {
 
 using sf::formatNumber;
 
+std::string upper(std::string s) {
+  for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
 void requirePositive(double value, const char* option) {
   if (!(value > 0.0) || !std::isfinite(value))
-    throw Error(std::string("VALUE ") + (option + 1),
+    throw Error("VALUE " + upper(option + 1),
                 std::string(option) + " must be > 0, got " + formatNumber(value));
+}
+
+// A length rounded for a suggestion (12 significant digits: no 0.8999999999999999).
+std::string roundedLength(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.12g", v);
+  return buffer;
 }
 
 // Whole number of spacings in `length`, or an error naming both values.
@@ -23,7 +37,7 @@ int wholeCells(double length, double h, const char* what) {
   if (n < 1 || std::abs(n * h - length) > 1e-9 * std::max(length, h))
     throw Error("VALUE SIZE", std::string("-size ") + what + " " + formatNumber(length) +
                                   " is not a whole number of spacings (h = " + formatNumber(h) +
-                                  "): use " + formatNumber(std::max(1.0, n) * h));
+                                  "): use " + roundedLength(std::max(1.0, n) * h));
   if (n > 1e9) throw Error("VALUE SIZE", std::string("lattice ") + what + " too large");
   return static_cast<int>(n);
 }
@@ -132,7 +146,9 @@ ResolvedLattice resolve(const LatticeDef& def) {
                                      formatNumber(mach) +
                                      " on this lattice (c = " + formatNumber(r.latticeSpeed()) +
                                      "): must be below " + formatNumber(maxBoundaryMach));
-    if (side.kind == SideKind::pressure) requirePositive(side.pressure, "-pressure");
+    if (side.kind == SideKind::pressure && !(side.pressure > 0))
+      throw Error("VALUE WALLS", std::string(sideNames[s]) + " pressure must be > 0, got " +
+                                     formatNumber(side.pressure));
   }
   return r;
 }

@@ -25,7 +25,8 @@ const lb::Lattice& Manager::lattice() const {
 
 void Manager::createLattice(lb::LatticeDef def) {
   if (lattice_) throw Error("EXISTS LATTICE", "a lattice exists: \"lattice delete\" it first");
-  if (!def.tau && fixedTimestep_) def.timestep = fixedTimestep_;
+  // A fixed timestep gives tau (with a viscosity) or the viscosity (with tau).
+  if (fixedTimestep_ && (!def.tau || !def.viscosity)) def.timestep = fixedTimestep_;
   auto lattice = std::make_unique<lb::Lattice>(lb::resolve(def));
   lattice->setThreads(threads_);
   lattice_ = std::move(lattice);

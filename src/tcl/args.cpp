@@ -1,6 +1,7 @@
 #include "sandflow/tcl/args.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <sstream>
 
 namespace sf::tcl {
@@ -12,6 +13,21 @@ void noteOption(Tcl_Interp* interp, const char* what) {
 }
 
 }  // namespace
+
+void noteOptionOnce(Tcl_Interp* interp, const char* option) {
+  // Range checks fail without the note the converters add: add it once.
+  const std::string note = std::string("(in ") + option + " option)";
+  Tcl_Obj* options = Tcl_GetReturnOptions(interp, TCL_ERROR);
+  Tcl_IncrRefCount(options);
+  Tcl_Obj* key = Tcl_NewStringObj("-errorinfo", -1);
+  Tcl_IncrRefCount(key);
+  Tcl_Obj* info = nullptr;
+  Tcl_DictObjGet(nullptr, options, key, &info);
+  const bool noted = info && std::strstr(Tcl_GetString(info), note.c_str());
+  Tcl_DecrRefCount(key);
+  Tcl_DecrRefCount(options);
+  if (!noted) Tcl_AddErrorInfo(interp, ("\n    " + note).c_str());
+}
 
 int fail(Tcl_Interp* interp, const std::string& code, const std::string& message) {
   Tcl_SetObjResult(interp, newString(message));
@@ -110,7 +126,10 @@ bool parseOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first
            std::string("value for \"") + Tcl_GetString(objv[i]) + "\" missing");
       return false;
     }
-    if (!handle(index, objv[i + 1])) return false;
+    if (!handle(index, objv[i + 1])) {
+      noteOptionOnce(interp, table[index].name);
+      return false;
+    }
   }
   return true;
 }

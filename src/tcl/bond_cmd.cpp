@@ -81,7 +81,7 @@ int BondAuto(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
 
 int BondIds(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   Tcl_Obj* l = Tcl_NewListObj(0, nullptr);
@@ -148,7 +148,7 @@ int BondBroken(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
 
 int BondHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   std::string text = helpText(

@@ -625,7 +625,7 @@ int ElementDelete(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
 
 int ElementNext(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   Tcl_SetObjResult(interp, Tcl_NewIntObj(sessionOf(data).manager.assembly().nextId()));
@@ -635,7 +635,7 @@ int ElementNext(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
 int helpFor(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], const char* noun,
             std::initializer_list<const char*> verbs, const Table& table) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   Tcl_SetObjResult(interp, newString(helpText(noun, verbs, table.specs.data())));

@@ -26,7 +26,7 @@ constexpr const char* kHelp =
 
 int Help(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   Tcl_SetObjResult(interp, Tcl_NewStringObj(kHelp, -1));

@@ -147,22 +147,21 @@ bool applyOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first
       case kCells:
         ok = getInt(interp, v, name, def.cells);
         if (ok && def.cells < 1)
-          return reject(interp, "VALUE CELLS",
-                        "-cells must be >= 1, got " + std::to_string(def.cells));
+          ok = reject(interp, "VALUE CELLS",
+                      "-cells must be >= 1, got " + std::to_string(def.cells));
         def.spacing = 0;
         break;
       case kSpacing:
         ok = getDouble(interp, v, name, def.spacing);
         if (ok && !(def.spacing > 0))
-          return reject(interp, "VALUE SPACING",
-                        "-spacing must be > 0, got " + formatNumber(def.spacing));
+          ok = reject(interp, "VALUE SPACING",
+                      "-spacing must be > 0, got " + formatNumber(def.spacing));
         def.cells = 0;
         break;
       case kViscosity:
         ok = getDouble(interp, v, name, d);
         if (ok && !(d > 0))
-          return reject(interp, "VALUE VISCOSITY",
-                        "-viscosity must be > 0, got " + formatNumber(d));
+          ok = reject(interp, "VALUE VISCOSITY", "-viscosity must be > 0, got " + formatNumber(d));
         def.viscosity = d;
         break;
       case kDensity:
@@ -171,8 +170,8 @@ bool applyOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first
       case kTau:
         ok = getDouble(interp, v, name, d);
         if (ok && !(d > 0.5))
-          return reject(interp, "VALUE TAU",
-                        "tau " + formatNumber(d) + " is unstable: must exceed 0.5");
+          ok = reject(interp, "VALUE TAU",
+                      "tau " + formatNumber(d) + " is unstable: must exceed 0.5");
         def.tau = d;
         break;
       case kPeriodic:
@@ -197,10 +196,7 @@ bool applyOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first
         break;
     }
     if (!ok) {
-      if (k == kPeriodic || k == kWalls || k == kCollision || k == kForceScheme) {
-        const std::string info = std::string("\n    (in ") + name + " option)";
-        Tcl_AddErrorInfo(interp, info.c_str());
-      }
+      noteOptionOnce(interp, name);
       return false;
     }
   }
@@ -333,7 +329,7 @@ int LatticeCget(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
 int LatticeInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   Session& s = sessionOf(data);
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   return guarded(interp, [&] {
@@ -408,7 +404,7 @@ int LatticeProbe(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
 int LatticeDelete(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   Session& s = sessionOf(data);
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   return guarded(interp, [&] {
@@ -487,7 +483,7 @@ int ObstacleInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
 
 int LatticeObstacles(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   return guarded(interp, [&] {
@@ -501,7 +497,7 @@ int LatticeObstacles(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
 
 int LatticeHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   Tcl_SetObjResult(

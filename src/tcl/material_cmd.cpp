@@ -181,7 +181,7 @@ int MaterialCget(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
 
 int MaterialNames(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   Tcl_Obj* names = Tcl_NewListObj(0, nullptr);
@@ -193,7 +193,7 @@ int MaterialNames(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
 
 int MaterialHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   Tcl_SetObjResult(interp, newString(helpText("material",

@@ -1,4 +1,8 @@
 // output vtk PREFIX
+#include <string>
+#include <vector>
+
+#include "sandflow/io/atomic_files.hpp"
 #include "sandflow/io/vtk.hpp"
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/session.hpp"
@@ -22,24 +26,26 @@ int OutputVtk(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
   if (!s.manager.hasLattice() && !elements)
     return fail(interp, "LOOKUP SCENE",
                 "nothing to write: the scene has no lattice and no elements");
+  std::vector<io::FileContent> files;
+  if (s.manager.hasLattice())
+    files.push_back({prefix + ".vti",
+                     [&](std::ostream& out) { io::writeLatticeVti(s.manager.lattice(), out); }});
+  if (elements)
+    files.push_back({prefix + ".vtp",
+                     [&](std::ostream& out) { io::writeElementsVtp(s.manager.assembly(), out); }});
   return guarded(interp, [&] {
-    Tcl_Obj* files = Tcl_NewListObj(0, nullptr);
-    if (s.manager.hasLattice()) {
-      io::writeLatticeVti(s.manager.lattice(), prefix + ".vti");
-      Tcl_ListObjAppendElement(nullptr, files, newString(prefix + ".vti"));
-    }
-    if (elements) {
-      io::writeElementsVtp(s.manager.assembly(), prefix + ".vtp");
-      Tcl_ListObjAppendElement(nullptr, files, newString(prefix + ".vtp"));
-    }
-    Tcl_SetObjResult(interp, files);
+    io::writeAtomically(files);  // both appear, or neither
+    Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
+    for (const io::FileContent& f : files)
+      Tcl_ListObjAppendElement(nullptr, list, newString(f.path));
+    Tcl_SetObjResult(interp, list);
     return TCL_OK;
   });
 }
 
 int OutputHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   Tcl_SetObjResult(

@@ -20,12 +20,11 @@ namespace eval ::sf {
   proc shareSource {} {
     if {[info commands ::sf::TclSource] ne ""} return
     rename ::source ::sf::TclSource
-    proc ::source {args} {
-      if {[llength $args] >= 1 && [lindex $args 0] in {create delete ids info help}} {
-        tailcall ::sf::source {*}$args
-      }
-      tailcall ::sf::TclSource {*}$args
-    }
+    set map {}
+    foreach verb {create delete ids info help} {dict set map $verb ::sf::source::$verb}
+    # Any other first word is Tcl's "source ?-encoding name? FILE".
+    namespace ensemble create -command ::source -map $map -prefixes 0 \
+        -unknown {apply {{ensemble word args} {list ::sf::TclSource $word}}}
   }
 }
 )tcl";

@@ -73,7 +73,7 @@ int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
 
 int Step(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   return advance(sessionOf(data));
@@ -81,7 +81,7 @@ int Step(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
 
 int Reset(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   sessionOf(data).manager.reset();

@@ -123,7 +123,7 @@ int SimCget(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
 
 int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   const sim::Manager& m = sessionOf(data).manager;
@@ -156,7 +156,7 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
 
 int SimHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   Tcl_SetObjResult(

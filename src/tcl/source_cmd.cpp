@@ -66,7 +66,7 @@ int SourceDelete(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
 
 int SourceIds(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   Tcl_Obj* l = Tcl_NewListObj(0, nullptr);
@@ -96,7 +96,7 @@ int SourceInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
 
 int SourceHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "");
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   Tcl_SetObjResult(

@@ -31,6 +31,9 @@ inline bool reject(Tcl_Interp* interp, const std::string& code, const std::strin
   return false;
 }
 
+// Adds "(in OPTION option)" to errorInfo unless it is there already.
+void noteOptionOnce(Tcl_Interp* interp, const char* option);
+
 // Converters: on failure they leave Tcl's message, add "(in OPTION option)" to
 // errorInfo and return false. `what` names the option or argument.
 bool getDouble(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, double& out);
