@@ -10,13 +10,6 @@
 namespace sf::dem {
 namespace {
 
-double cross(const Vec2& a, const Vec2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-Vec2 spin(double w, const Vec2& r) {
-  return Vec2(-w * r.y(), w * r.x());
-}  // w x r
-
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();

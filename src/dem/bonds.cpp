@@ -6,20 +6,7 @@
 #include "sandflow/dem/assembly.hpp"
 
 namespace sf::dem {
-namespace {
-
-Vec2 rotate(const Vec2& v, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
-}
-double cross(const Vec2& a, const Vec2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-Vec2 spin(double w, const Vec2& r) {
-  return Vec2(-w * r.y(), w * r.x());
-}
-
-}  // namespace
+namespace {}  // namespace
 
 bool Assembly::closestPoints(int a, int b, double gap, Vec2& pa, Vec2& pb) const {
   const Bodies& B = bodies_;
@@ -76,8 +63,8 @@ int Assembly::bond(int idA, int idB, double stiffness, double strength, double s
   x.id = nextBondId_++;
   x.idA = idA;
   x.idB = idB;
-  x.anchorA = rotate(pa - bodies_.x[a], -bodies_.angle[a]);
-  x.anchorB = rotate(pb - bodies_.x[b], -bodies_.angle[b]);
+  x.anchorA = rotated(pa - bodies_.x[a], -bodies_.angle[a]);
+  x.anchorB = rotated(pb - bodies_.x[b], -bodies_.angle[b]);
   Vec2 n = bodies_.x[b] - bodies_.x[a];
   if ((pb - pa).norm() > 1e-12 * n.norm()) n = pb - pa;
   x.normal0 = n.normalized();
@@ -150,9 +137,9 @@ void Assembly::bondForces(double dt, const std::vector<Vec2>& v, const std::vect
   kept.reserve(bonds_.size());
   for (Bond& x : bonds_) {
     const int a = B.slot(x.idA), b = B.slot(x.idB);
-    const Vec2 ra = rotate(x.anchorA, B.angle[a]), rb = rotate(x.anchorB, B.angle[b]);
+    const Vec2 ra = rotated(x.anchorA, B.angle[a]), rb = rotated(x.anchorB, B.angle[b]);
     const Vec2 pa = B.x[a] + ra, pb = B.x[b] + rb;
-    const Vec2 n = rotate(x.normal0, 0.5 * ((B.angle[a] - x.angleA0) + (B.angle[b] - x.angleB0)));
+    const Vec2 n = rotated(x.normal0, 0.5 * ((B.angle[a] - x.angleA0) + (B.angle[b] - x.angleB0)));
     const Vec2 d = pb - pa;
     const double stretch = d.dot(n) - x.length;
     const Vec2 offset = d - d.dot(n) * n;

@@ -23,11 +23,6 @@ double powAbs(double u, double e) {
   return std::pow(u, e);
 }
 
-Vec2 rotate(const Vec2& v, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
-}
-
 }  // namespace
 
 Superquadric::Superquadric(double a, double b, double m, double n, int samples)
@@ -59,7 +54,7 @@ Superquadric::Superquadric(double a, double b, double m, double n, int samples)
 std::vector<Vec2> Superquadric::world(const Vec2& x, double angle) const {
   std::vector<Vec2> out;
   out.reserve(outline_.size());
-  for (const Vec2& p : outline_) out.push_back(x + rotate(p, angle));
+  for (const Vec2& p : outline_) out.push_back(x + rotated(p, angle));
   return out;
 }
 
@@ -78,7 +73,7 @@ Vec2 Superquadric::gradient(const Vec2& p) const {
 bool Superquadric::penetration(const Vec2& x, double angle, const Vec2& point, double& depth,
                                Vec2& normal) const {
   if ((point - x).squaredNorm() >= radius_ * radius_) return false;  // cheap rejection
-  const Vec2 local = rotate(point - x, -angle);
+  const Vec2 local = rotated(point - x, -angle);
   if (implicit(local) >= 0) return false;
   // Walk out along the gradient to the outline (Newton on F along the normal).
   Vec2 q = local;
@@ -96,7 +91,7 @@ bool Superquadric::penetration(const Vec2& x, double angle, const Vec2& point, d
   const Vec2 g = gradient(q);
   const Vec2 nLocal = g.norm() > 0 ? Vec2(g.normalized()) : Vec2(1, 0);
   depth = std::max(0.0, (q - local).dot(nLocal));
-  normal = rotate(nLocal, angle);
+  normal = rotated(nLocal, angle);
   return depth > 0;
 }
 
