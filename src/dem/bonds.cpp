@@ -6,7 +6,6 @@
 #include "sandflow/dem/assembly.hpp"
 
 namespace sf::dem {
-namespace {}  // namespace
 
 bool Assembly::closestPoints(int a, int b, double gap, Vec2& pa, Vec2& pb) const {
   const Bodies& B = bodies_;
