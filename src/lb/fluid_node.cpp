@@ -43,19 +43,20 @@ StepStats runSpan(const StepContext& ctx, std::ptrdiff_t first, std::ptrdiff_t n
   double mass = 0.0, maxU2 = 0.0;
 #pragma omp simd reduction(+ : mass) reduction(max : maxU2)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
-    double f[Q] = {s0[k], s1[k], s2[k], s3[k], s4[k], s5[k], s6[k], s7[k], s8[k]};
+    double f0 = s0[k], f1 = s1[k], f2 = s2[k], f3 = s3[k], f4 = s4[k], f5 = s5[k], f6 = s6[k],
+           f7 = s7[k], f8 = s8[k];
     double u2;
-    mass += collide<C, S>(f, p, u2);
+    mass += collide<C, S>(f0, f1, f2, f3, f4, f5, f6, f7, f8, p, u2);
     maxU2 = u2 > maxU2 ? u2 : maxU2;
-    d0[k] = f[0];
-    d1[k] = f[1];
-    d2[k] = f[2];
-    d3[k] = f[3];
-    d4[k] = f[4];
-    d5[k] = f[5];
-    d6[k] = f[6];
-    d7[k] = f[7];
-    d8[k] = f[8];
+    d0[k] = f0;
+    d1[k] = f1;
+    d2[k] = f2;
+    d3[k] = f3;
+    d4[k] = f4;
+    d5[k] = f5;
+    d6[k] = f6;
+    d7[k] = f7;
+    d8[k] = f8;
   }
   return {mass, maxU2};
 }

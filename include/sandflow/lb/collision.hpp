@@ -10,6 +10,12 @@
 //   nodal (thesis): S_i = 3 w_i e_i.F, velocity u = sum(f e)/rho;
 //   Guo (2002):     S_i = (1 - omega/2) w_i [3 (e_i - u).F + 9 (e_i.u)(e_i.F)],
 //                   velocity u = (sum(f e) + F/2)/rho; second order in time.
+//
+// Directions i and -i (= i + 4) are relaxed together: their equilibria share
+// the even part w rho (1 - 3/2 u.u + 9/2 (e.u)^2) and differ in the sign of the
+// odd part 3 w rho e.u. The populations travel as nine scalars, not an array:
+// inside an `omp simd` loop an array becomes per-lane memory and the loop runs at
+// two thirds of the speed.
 #include "sandflow/lb/d2q9.hpp"
 
 namespace sf::lb {
@@ -43,56 +49,78 @@ inline void velocityFromMoments(double rho, double jx, double jy, const Collisio
   }
 }
 
-// Collides f in place. Returns the density; u2 receives |u|^2 (lattice units).
-template <Collision C, ForceScheme S>
-inline double collide(double (&f)[d2q9::Q], const CollisionParams& p, double& u2) {
-  using namespace d2q9;
-  double rho = 0.0, jx = 0.0, jy = 0.0;
-#pragma GCC unroll 9
-  for (int i = 0; i < Q; ++i) {
-    rho += f[i];
-    jx += ex[i] * f[i];
-    jy += ey[i] * f[i];
+namespace detail {
+
+struct NodeMoments {
+  double rho, ux, uy;
+  double even;  // 1 - 3/2 u.u
+  double uF;    // u.F (Guo only)
+};
+
+// Relaxes the pair (I, I + 4), 1 <= I <= 4.
+template <Collision C, ForceScheme S, int I>
+inline void relaxPair(double& fi, double& fo, const NodeMoments& n, const CollisionParams& p) {
+  constexpr double wi = d2q9::w[I];
+  constexpr int cx = d2q9::ex[I], cy = d2q9::ey[I];
+  const double eu = cx * n.ux + cy * n.uy;
+  const double eF = cx * p.fx + cy * p.fy;
+  const double even = n.even + 4.5 * eu * eu, odd = 3.0 * eu;
+  const double anti = 3.0 * wi * eF;  // antisymmetric source, both schemes
+  const double sym = S == ForceScheme::guo ? wi * (9.0 * eu * eF - 3.0 * n.uF) : 0.0;
+  const double op = p.omegaPlus;
+  if constexpr (C == Collision::bgk) {
+    const double g = S == ForceScheme::guo ? 1.0 - 0.5 * op : 1.0;
+    const double keep = 1.0 - op, r = op * wi * n.rho;
+    const double si = g * (sym + anti), so = g * (sym - anti);
+    fi = keep * fi + r * (even + odd) + si;
+    fo = keep * fo + r * (even - odd) + so;
+  } else {
+    // P = omega+ (f+ - f+eq), M = omega- (f- - f-eq), f+- = (fi +- fo)/2.
+    const double om = p.omegaMinus;
+    const double P = 0.5 * op * (fi + fo) - op * wi * n.rho * even;
+    const double M = 0.5 * om * (fi - fo) - om * wi * n.rho * odd;
+    if constexpr (S == ForceScheme::guo) {
+      const double s = (1.0 - 0.5 * op) * sym, a = (1.0 - 0.5 * om) * anti;
+      fi = fi - P - M + (s + a);
+      fo = fo - P + M + (s - a);
+    } else {
+      fi = fi - P - M + anti;
+      fo = fo - P + M - anti;
+    }
   }
+}
+
+}  // namespace detail
+
+// Collides the nine populations of one node in place. Returns the density; u2
+// receives |u|^2 (lattice units).
+template <Collision C, ForceScheme S>
+inline double collide(double& f0, double& f1, double& f2, double& f3, double& f4, double& f5,
+                      double& f6, double& f7, double& f8, const CollisionParams& p, double& u2) {
+  const double rho = f0 + f1 + f2 + f3 + f4 + f5 + f6 + f7 + f8;
+  const double jx = f1 + f2 + f8 - f4 - f5 - f6;
+  const double jy = f2 + f3 + f4 - f6 - f7 - f8;
   double ux, uy;
   velocityFromMoments<S>(rho, jx, jy, p, ux, uy);
   u2 = ux * ux + uy * uy;
-
-  // sym[i]: the symmetric part of the Guo source (zero for nodal forcing); the
-  // antisymmetric part is 3 w_i e_i.F for both schemes.
-  double feq[Q], sym[Q], anti[Q];
-#pragma GCC unroll 9
-  for (int i = 0; i < Q; ++i) {
-    feq[i] = equilibrium(i, rho, ux, uy);
-    anti[i] = 3.0 * w[i] * (ex[i] * p.fx + ey[i] * p.fy);
-    if constexpr (S == ForceScheme::guo) {
-      const double eu = ex[i] * ux + ey[i] * uy;
-      sym[i] = w[i] * (9.0 * eu * (ex[i] * p.fx + ey[i] * p.fy) - 3.0 * (ux * p.fx + uy * p.fy));
-    } else {
-      sym[i] = 0.0;
-    }
-  }
-
-  if constexpr (C == Collision::bgk) {
-    const double om = p.omegaPlus;
-    const double g = (S == ForceScheme::guo) ? 1.0 - 0.5 * om : 1.0;
-#pragma GCC unroll 9
-    for (int i = 0; i < Q; ++i) f[i] += -om * (f[i] - feq[i]) + g * (anti[i] + sym[i]);
-  } else {
-    const double op = p.omegaPlus, om = p.omegaMinus;
-    const double gp = (S == ForceScheme::guo) ? 1.0 - 0.5 * op : 1.0;
-    const double gm = (S == ForceScheme::guo) ? 1.0 - 0.5 * om : 1.0;
-    f[0] += -op * (f[0] - feq[0]) + gp * sym[0];
-#pragma GCC unroll 4
-    for (int i = 1; i <= 4; ++i) {
-      const int o = i + 4;  // opposite of i
-      const double dp = -op * 0.5 * (f[i] + f[o] - feq[i] - feq[o]) + gp * sym[i];
-      const double dm = -om * 0.5 * (f[i] - f[o] - feq[i] + feq[o]) + gm * anti[i];
-      f[i] += dp + dm;
-      f[o] += dp - dm;
-    }
-  }
+  const detail::NodeMoments n{rho, ux, uy, 1.0 - 1.5 * u2, ux * p.fx + uy * p.fy};
+  // The rest population: no odd part; only Guo's symmetric source reaches it.
+  const double op = p.omegaPlus;
+  const double rest = (1.0 - op) * f0 + op * d2q9::w[0] * rho * n.even;
+  if constexpr (S == ForceScheme::guo)
+    f0 = rest - (1.0 - 0.5 * op) * 3.0 * d2q9::w[0] * n.uF;
+  else
+    f0 = rest;
+  detail::relaxPair<C, S, 1>(f1, f5, n, p);
+  detail::relaxPair<C, S, 2>(f2, f6, n, p);
+  detail::relaxPair<C, S, 3>(f3, f7, n, p);
+  detail::relaxPair<C, S, 4>(f4, f8, n, p);
   return rho;
+}
+
+template <Collision C, ForceScheme S>
+inline double collide(double (&f)[d2q9::Q], const CollisionParams& p, double& u2) {
+  return collide<C, S>(f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], f[8], p, u2);
 }
 
 }  // namespace sf::lb
