@@ -245,8 +245,9 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
   const std::vector<Vec2>& vel = useHalfVelocity ? b.vHalf : b.v;
   const std::vector<double>& omega = useHalfVelocity ? b.wHalf : b.w;
   for (int s = 0; s < n; ++s) {
-    b.force[s] = b.appliedForce[s] + b.mass[s] * (gravity + b.acceleration[s]);
-    b.torque[s] = b.appliedTorque[s];
+    b.force[s] = b.appliedForce[s] + b.mass[s] * (gravity + b.acceleration[s]) + b.fluidForce[s] +
+                 b.buoyancy[s];
+    b.torque[s] = b.appliedTorque[s] + b.fluidTorque[s];
   }
 
   const int nm = materials_.size();

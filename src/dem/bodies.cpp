@@ -14,9 +14,10 @@ void Bodies::push(int elementId) {
   id.push_back(elementId);
   shape.emplace_back();
   material.push_back(0);
-  for (auto* a : {&x, &v, &vHalf, &force, &appliedForce, &acceleration}) a->push_back(Vec2::Zero());
+  for (auto* a : {&x, &v, &vHalf, &force, &appliedForce, &acceleration, &fluidForce, &buoyancy})
+    a->push_back(Vec2::Zero());
   for (auto* a : {&angle, &w, &wHalf, &torque, &appliedTorque, &mass, &inertia, &invMass,
-                  &invInertia, &reach, &extent})
+                  &invInertia, &reach, &extent, &fluidTorque})
     a->push_back(0.0);
   hold.push_back(0);
   started.push_back(0);
@@ -34,9 +35,10 @@ void Bodies::swapRemove(int s) {
   move(id);
   move(shape);
   move(material);
-  for (auto* a : {&x, &v, &vHalf, &force, &appliedForce, &acceleration}) move(*a);
+  for (auto* a : {&x, &v, &vHalf, &force, &appliedForce, &acceleration, &fluidForce, &buoyancy})
+    move(*a);
   for (auto* a : {&angle, &w, &wHalf, &torque, &appliedTorque, &mass, &inertia, &invMass,
-                  &invInertia, &reach, &extent})
+                  &invInertia, &reach, &extent, &fluidTorque})
     move(*a);
   move(hold);
   move(started);

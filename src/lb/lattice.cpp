@@ -1,6 +1,7 @@
 #include "sandflow/lb/lattice.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <new>
@@ -93,19 +94,34 @@ StepContext Lattice::context() const {
 }
 
 StepStats Lattice::step(double machLimit) {
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
   const StepContext ctx = context();
   StepStats stats;
   for (const auto& k : kinds_) stats.merge(k->streamCollide(ctx));
+  const auto t1 = Clock::now();
+  stats.merge(covered_.streamCollide(ctx));  // after the bulk: it overwrites its cells
+  const auto t2 = Clock::now();
   if (!std::isfinite(stats.mass) || !(stats.maxU2 <= machLimit * machLimit))
     reportInstability(stats, machLimit);
   std::swap(f_, g_);
   for (const auto& k : kinds_) k->fill(f_);
   lastMach_ = std::sqrt(stats.maxU2);
+  canUndo_ = true;
+  times_.bulk += std::chrono::duration<double>(t1 - t0).count();
+  times_.covered += std::chrono::duration<double>(t2 - t1).count();
+  times_.fill += std::chrono::duration<double>(Clock::now() - t2).count();
   return stats;
 }
 
-void Lattice::moments(const double* f, std::int64_t x, double& rho, double& jx,
-                      double& jy) const {
+void Lattice::undoStep() {
+  if (!canUndo_) throw Error("STATE UNDO", "there is no lattice step to undo");
+  // The step collided f_ into g_ and swapped: the state before it is intact in g_.
+  std::swap(f_, g_);
+  canUndo_ = false;
+}
+
+void Lattice::moments(const double* f, std::int64_t x, double& rho, double& jx, double& jy) const {
   rho = jx = jy = 0;
   for (int d = 0; d < 9; ++d) {
     const double v = f[d * stride_ + x];
@@ -241,6 +257,7 @@ void Lattice::initialize(const std::function<void(const Vec2&, double&, Vec2&)>&
 }
 
 void Lattice::setNodeState(std::int64_t x, double rho, const Vec2& u) {
+  canUndo_ = false;
   // Stored populations are post-collision: collide an equilibrium whose
   // collision velocity is u, so that the node reports u (and the force acts
   // from t = 0 on).
@@ -270,17 +287,27 @@ std::size_t Lattice::memoryBytes() const {
 
 // ---- obstacles -------------------------------------------------------------
 
+namespace {
+
+// The id to give a new obstacle: `wanted`, or the next free one when < 0.
+int obstacleId(int wanted, const std::vector<int>& used) {
+  if (wanted < 0) {
+    int id = 0;
+    for (int u : used) id = std::max(id, u + 1);
+    return id;
+  }
+  if (std::find(used.begin(), used.end(), wanted) != used.end())
+    throw Error("VALUE ID", "obstacle id " + std::to_string(wanted) + " is in use");
+  return wanted;
+}
+
+}  // namespace
+
 int Lattice::addObstacle(const RectObstacle& rect) {
   RectObstacle r = rect;
   if (!r.lo.allFinite() || !r.hi.allFinite() || !(r.lo.x() < r.hi.x()) || !(r.lo.y() < r.hi.y()))
     throw Error("VALUE RECT", "rect must be {x0 y0 x1 y1} with x0 < x1 and y0 < y1");
-  if (r.id < 0) {
-    r.id = 0;
-    for (const auto& o : obstacles_) r.id = std::max(r.id, o.id + 1);
-  } else if (std::any_of(obstacles_.begin(), obstacles_.end(),
-                         [&](const RectObstacle& o) { return o.id == r.id; })) {
-    throw Error("VALUE ID", "obstacle id " + std::to_string(r.id) + " is in use");
-  }
+  r.id = obstacleId(r.id, obstacleIds());
   bool covers = false;
   for (int j = 0; j < p_.ny && !covers; ++j)
     for (int i = 0; i < p_.nx && !covers; ++i) {
@@ -296,7 +323,82 @@ int Lattice::addObstacle(const RectObstacle& rect) {
   return r.id;
 }
 
+int Lattice::addCircle(const CircleObstacle& circle) {
+  CircleObstacle c = circle;
+  if (!c.centre.allFinite() || !std::isfinite(c.radius) || !c.velocity.allFinite() ||
+      !std::isfinite(c.spin))
+    throw Error("VALUE CIRCLE", "circle centre, radius and velocity must be finite");
+  if (!(c.radius > 0))
+    throw Error("VALUE RADIUS", "circle radius must be > 0, got " + formatNumber(c.radius));
+  // Inside: some of the disc must lie on the lattice; outside: some of the
+  // lattice must lie outside the disc.
+  const Vec2 lo = p_.def.origin, hi = lo + Vec2(p_.nx * p_.h, p_.ny * p_.h);
+  const Vec2 nearest = c.centre.cwiseMax(lo).cwiseMin(hi);
+  double farthest = 0;
+  for (const Vec2& corner : {lo, hi, Vec2(lo.x(), hi.y()), Vec2(hi.x(), lo.y())})
+    farthest = std::max(farthest, (corner - c.centre).norm());
+  if (!c.outside && (nearest - c.centre).norm() >= c.radius)
+    throw Error("VALUE CIRCLE", "circle {" + formatNumber(c.centre.x()) + " " +
+                                    formatNumber(c.centre.y()) + " " + formatNumber(c.radius) +
+                                    "} lies outside the lattice");
+  if (c.outside && farthest <= c.radius)
+    throw Error("VALUE CIRCLE",
+                "circle {" + formatNumber(c.centre.x()) + " " + formatNumber(c.centre.y()) + " " +
+                    formatNumber(c.radius) +
+                    "} holds the whole lattice: with -outside 1 it would cover nothing");
+  c.id = obstacleId(c.id, obstacleIds());
+  c.force = Vec2::Zero(), c.torque = 0, c.cells = 0;
+  circles_.push_back(c);
+  return c.id;
+}
+
+void Lattice::setCircleLoad(std::size_t index, const Vec2& force, double torque,
+                            std::size_t cells) {
+  CircleObstacle& c = circles_.at(index);
+  c.force = force, c.torque = torque, c.cells = cells;
+}
+
+void Lattice::advanceCircles(double dt) {
+  const Vec2 period(p_.nx * p_.h, p_.ny * p_.h);
+  const bool periodic[2] = {p_.def.sides[left].kind == SideKind::periodic,
+                            p_.def.sides[bottom].kind == SideKind::periodic};
+  for (CircleObstacle& c : circles_) {
+    c.centre += dt * c.velocity;
+    for (int a = 0; a < 2; ++a)
+      if (periodic[a] && c.velocity[a] != 0) {
+        const double lo = p_.def.origin[a];
+        c.centre[a] = lo + std::fmod(std::fmod(c.centre[a] - lo, period[a]) + period[a], period[a]);
+      }
+  }
+}
+
+void Lattice::setCoveredCells(std::vector<CoveredCell> cells, bool equilibriumInterior) {
+  covered_.cells = std::move(cells);
+  covered_.equilibriumInterior = equilibriumInterior;
+  covered_.exchange.assign(covered_.cells.size(), Vec2::Zero());
+}
+
+double Lattice::solidRatio(int i, int j) const {
+  const std::int64_t x = index(i, j);
+  for (const CoveredCell& c : covered_.cells)
+    if (c.node == x) return c.eps;
+  return 0.0;
+}
+
+Vec2 Lattice::solidVelocity(int i, int j) const {
+  const std::int64_t x = index(i, j);
+  for (const CoveredCell& c : covered_.cells)
+    if (c.node == x) return Vec2(c.ux, c.uy) * p_.latticeSpeed();
+  return Vec2::Zero();
+}
+
 void Lattice::deleteObstacle(int id) {
+  auto circle = std::find_if(circles_.begin(), circles_.end(),
+                             [&](const CircleObstacle& o) { return o.id == id; });
+  if (circle != circles_.end()) {
+    circles_.erase(circle);
+    return;
+  }
   auto it = std::find_if(obstacles_.begin(), obstacles_.end(),
                          [&](const RectObstacle& o) { return o.id == id; });
   if (it == obstacles_.end())
@@ -308,15 +410,27 @@ void Lattice::deleteObstacle(int id) {
 std::vector<int> Lattice::obstacleIds() const {
   std::vector<int> ids;
   for (const auto& o : obstacles_) ids.push_back(o.id);
+  for (const auto& o : circles_) ids.push_back(o.id);
+  std::sort(ids.begin(), ids.end());
   return ids;
 }
 
 ObstacleInfo Lattice::obstacleInfo(int id) const {
+  ObstacleInfo info;
+  auto circle = std::find_if(circles_.begin(), circles_.end(),
+                             [&](const CircleObstacle& o) { return o.id == id; });
+  if (circle != circles_.end()) {
+    info.circle = true;
+    info.disc = *circle;
+    info.nodes = circle->cells;
+    info.force = circle->force;
+    info.torque = circle->torque;
+    return info;
+  }
   auto it = std::find_if(obstacles_.begin(), obstacles_.end(),
                          [&](const RectObstacle& o) { return o.id == id; });
   if (it == obstacles_.end())
     throw Error("LOOKUP OBSTACLE", "no obstacle with id " + std::to_string(id));
-  ObstacleInfo info;
   info.shape = *it;
   const Vec2 centre = 0.5 * (it->lo + it->hi);
   for (int j = 0; j < p_.ny; ++j)

@@ -79,6 +79,10 @@ class Classifier {
 }  // namespace
 
 void Lattice::rebuildTopology() {
+  ++topology_;
+  canUndo_ = false;
+  covered_.cells.clear();  // the coupling covers the new topology before the next step
+  covered_.exchange.clear();
   const int nx = p_.nx, ny = p_.ny;
   const std::vector<NodeKind> previous = kind_;
   std::vector<NodeKind> kind(stride_, NodeKind::open);

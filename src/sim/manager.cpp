@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "sandflow/core/error.hpp"
@@ -41,6 +42,16 @@ void Manager::reconfigureLattice(const lb::LatticeDef& def) {
 void Manager::deleteLattice() {
   lattice();  // throws if none
   lattice_.reset();
+  coupler_.clear(assembly_);
+  coupled_ = false;
+}
+
+void Manager::setCoupling(const coupling::Settings& settings) {
+  if (settings.subcells != coupling::kExact && settings.subcells != 1 && settings.subcells != 2 &&
+      settings.subcells != 4 && settings.subcells != 8)
+    throw Error("VALUE SOLIDRATIO", "-solidratio must be exact, 1, 2, 4 or 8, got " +
+                                        std::to_string(settings.subcells));
+  coupling_ = settings;
 }
 
 double Manager::timestep() const {
@@ -63,18 +74,26 @@ void Manager::checkDemTimestep(double dt) const {
                     formatNumber(critical) + " (2 sqrt(m/k), lightest element, stiffest material)");
 }
 
-void Manager::setTimestep(double dt) {
-  if (!(dt > 0) || !std::isfinite(dt))
-    throw Error("VALUE TIMESTEP", "-timestep must be > 0, got " + formatNumber(dt));
-  checkDemTimestep(dt);
-  if (lattice_) {
-    lb::LatticeDef def = lattice_->params().def;
-    def.viscosity = lattice_->params().viscosity;
-    def.tau.reset();
-    def.timestep = dt;
-    lattice_->reconfigure(lb::resolve(def));
+void Manager::setStepping(std::optional<double> dt, std::optional<int> substeps) {
+  const int n = substeps.value_or(substeps_);
+  if (n < 1 || n > 1000)
+    throw Error("VALUE SUBSTEPS", "-substeps must be 1 to 1000, got " + std::to_string(n));
+  if (dt) {
+    if (!(*dt > 0) || !std::isfinite(*dt))
+      throw Error("VALUE TIMESTEP", "-timestep must be > 0, got " + formatNumber(*dt));
+    checkDemTimestep(*dt / n);
+    if (lattice_) {  // may refuse (tau); nothing has changed yet
+      lb::LatticeDef def = lattice_->params().def;
+      def.viscosity = lattice_->params().viscosity;
+      def.tau.reset();
+      def.timestep = *dt;
+      lattice_->reconfigure(lb::resolve(def));
+    }
+    fixedTimestep_ = *dt;
+  } else if (!assembly_.empty() && timestep() > 0) {
+    checkDemTimestep(timestep() / n);
   }
-  fixedTimestep_ = dt;
+  substeps_ = n;
 }
 
 void Manager::setThreads(int threads) {
@@ -84,22 +103,83 @@ void Manager::setThreads(int threads) {
   if (lattice_) lattice_->setThreads(threads);
 }
 
+// Covers the lattice for this step and checks what the fluid will see: a solid
+// surface faster than the Mach limit stops the step before anything changes;
+// one above the warning limit, or an element spanning under two cells, warns.
+void Manager::coupleBeforeFluid() {
+  coupler_.prepare(*lattice_, assembly_, coupling_, threads_);
+  const coupling::SolidSpeed& fast = coupler_.fastest();
+  const std::string who = fast.element >= 0 ? "element " + std::to_string(fast.element)
+                                            : "obstacle " + std::to_string(fast.obstacle);
+  if (fast.mach > machStopLimit())
+    throw Error("UNSTABLE SOLIDSPEED", "the surface of " + who + " moves at Mach " +
+                                           formatNumber(fast.mach) + " over the lattice, beyond " +
+                                           formatNumber(machStopLimit()) +
+                                           ": reduce the timestep or the speed");
+  if (!solidMachWarned_ && fast.mach > machWarnLimit()) {
+    solidMachWarned_ = true;
+    warn("the surface of " + who + " moves at Mach " + formatNumber(fast.mach) +
+         " over the lattice, beyond " + formatNumber(machWarnLimit()) +
+         ": the fluid near it is no longer nearly incompressible");
+  }
+  const dem::Bodies& b = assembly_.bodies();
+  const double h = lattice_->params().h;
+  for (int s = 0; s < b.size(); ++s) {
+    if (b.ghost[s] || b.shape[s]->type() == dem::ShapeType::wall) continue;
+    const double size = 2 * b.extent[s];
+    if (size >= 2 * h || !underResolvedWarned_.insert(b.id[s]).second) continue;
+    warn("element " + std::to_string(b.id[s]) + " is " + formatNumber(size) +
+         " across, under two lattice cells (h = " + formatNumber(h) +
+         "): the fluid does not resolve it");
+  }
+}
+
+void Manager::stepElements(double dt) {
+  for (int k = 0; k < substeps_; ++k) {
+    try {
+      assembly_.step(dt, gravity_);
+    } catch (const Error& e) {
+      const std::string where = substeps_ > 1
+                                    ? " (substep " + std::to_string(k + 1) + " of " +
+                                          std::to_string(substeps_) +
+                                          "; elements stay at substep " + std::to_string(k) + ")"
+                                    : "";
+      throw Error(e.code(), e.what() + where);
+    }
+  }
+}
+
 void Manager::step() {
   const double dt = timestep();
+  const double demDt = dt / substeps_;
   if (!assembly_.empty()) {
     if (!(dt > 0))
       throw Error(
           "VALUE TIMESTEP",
           "no timestep: the elements are all held; set one with \"sim configure -timestep\"");
-    checkDemTimestep(dt);
+    checkDemTimestep(demDt);
   }
+  auto stamp = [&](const Error& e) {
+    return Error(e.code(), "step " + std::to_string(steps_ + 1) +
+                               " (t = " + formatNumber(time_ + dt) + "): " + e.what());
+  };
+  using Clock = std::chrono::steady_clock;
+  auto t0 = Clock::now();
   if (lattice_) {
+    const bool couple = coupling::Coupler::needed(*lattice_, assembly_);
     try {
+      if (couple) {
+        coupleBeforeFluid();
+      } else if (coupled_) {
+        lattice_->setCoveredCells({}, coupling_.equilibriumInterior);
+        coupler_.clear(assembly_);
+      }
+      coupled_ = couple;
       lattice_->step(machStopLimit());
     } catch (const Error& e) {
-      throw Error(e.code(), "step " + std::to_string(steps_ + 1) +
-                                " (t = " + formatNumber(time_ + timestep()) + "): " + e.what());
+      throw stamp(e);
     }
+    if (couple) coupler_.collect(*lattice_, assembly_, coupling_, gravity_);
     if (!machWarned_ && lattice_->lastStepMach() > machWarnLimit()) {
       machWarned_ = true;
       warn("Mach number " + formatNumber(lattice_->lastStepMach()) + " at step " +
@@ -107,18 +187,30 @@ void Manager::step() {
            ": the flow is no longer nearly incompressible (reduce the timestep or the forcing)");
     }
   }
+  const auto t1 = Clock::now();
   try {
-    assembly_.step(dt, gravity_);
+    stepElements(demDt);
   } catch (const Error& e) {
-    throw Error(e.code(), "step " + std::to_string(steps_ + 1) +
-                              " (t = " + formatNumber(time_ + dt) + "): " + e.what());
+    if (lattice_) lattice_->undoStep();  // the fluid goes back with the elements
+    throw stamp(e);
   }
+  if (lattice_) lattice_->advanceCircles(dt);
+  const auto t2 = Clock::now();
+  times_.fluid += std::chrono::duration<double>(t1 - t0).count();
+  times_.elements += std::chrono::duration<double>(t2 - t1).count();
   time_ += dt;
   ++steps_;
 }
 
 void Manager::reset() {
   lattice_.reset();
+  coupler_ = coupling::Coupler();
+  coupling_ = coupling::Settings();
+  coupled_ = false;
+  substeps_ = 1;
+  solidMachWarned_ = false;
+  underResolvedWarned_.clear();
+  times_ = Times();
   assembly_ = dem::Assembly();
   assembly_.threads = threads_;
   gravity_ = Vec2::Zero();

@@ -564,7 +564,10 @@ int ElementInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
                         {"applied", triple(b.appliedForce[s], b.appliedTorque[s])},
                         {"acceleration", newVec2(b.acceleration[s])},
                         {"contacts", Tcl_NewIntObj(contacts)},
-                        {"contactforce", newVec2(a.contactForce(s))}});
+                        {"contactforce", newVec2(a.contactForce(s))},
+                        {"fluidforce", newVec2(b.fluidForce[s])},
+                        {"fluidtorque", newDouble(b.fluidTorque[s])},
+                        {"buoyancy", newVec2(b.buoyancy[s])}});
   if (shape.type() == ShapeType::disc) dictPut(d, "radius", fieldValue(a, s, fRadius));
   if (shape.type() == ShapeType::polygon) {
     Tcl_Obj* v = Tcl_NewListObj(0, nullptr);

@@ -387,13 +387,16 @@ int LatticeProbe(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
     static const char* const kindNames[] = {"fluid",    "noslip",   "slip", "solid",
                                             "velocity", "pressure", "open"};
     const lb::NodeKind k = l.kind(i, j);
-    const bool solid =
+    const bool wall =
         k == lb::NodeKind::noslip || k == lb::NodeKind::slip || k == lb::NodeKind::solid;
     Tcl_Obj* ij[2] = {Tcl_NewIntObj(i), Tcl_NewIntObj(j)};
+    // solid: 1 on fixed walls, else the solid ratio that moving solids gave the
+    // cell in the last step.
     Tcl_SetObjResult(interp, newDict({{"density", newDouble(l.density(i, j))},
                                       {"pressure", newDouble(l.pressure(i, j))},
                                       {"velocity", newVec2(l.velocity(i, j))},
-                                      {"solid", newDouble(solid ? 1.0 : 0.0)},
+                                      {"solid", newDouble(wall ? 1.0 : l.solidRatio(i, j))},
+                                      {"solidvelocity", newVec2(l.solidVelocity(i, j))},
                                       {"kind", Tcl_NewStringObj(kindNames[int(k)], -1)},
                                       {"node", Tcl_NewListObj(2, ij)},
                                       {"position", newVec2(l.position(i, j))}}));
@@ -446,6 +449,47 @@ int ObstacleRect(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
   });
 }
 
+const OptionSpec kCircleOptions[] = {
+    {"-outside", "0|1", "solid outside the circle instead of inside: a container (default 0)"},
+    {"-velocity", "{vx vy w}", "translation and rotation rate of the wall (default {0 0 0})"},
+    {"-id", "N", "the obstacle's id (default: the next free one)"},
+    {nullptr, nullptr, nullptr}};
+
+int ObstacleCircle(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  Session& s = sessionOf(data);
+  if (objc < 2 || objc % 2 == 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, "{cx cy r} ?-outside 0|1? ?-velocity {vx vy w}? ?-id N?");
+    return TCL_ERROR;
+  }
+  std::vector<double> circle;
+  if (!getDoubles(interp, objv[1], "circle", 3, circle)) return TCL_ERROR;
+  lb::CircleObstacle c;
+  c.id = -1;
+  c.centre = Vec2(circle[0], circle[1]);
+  c.radius = circle[2];
+  if (!(c.radius > 0))
+    return fail(interp, "VALUE RADIUS", "circle radius must be > 0, got " + formatNumber(c.radius));
+  if (!parseOptions(interp, objc, objv, 2, kCircleOptions, [&](int k, Tcl_Obj* v) {
+        if (k == 0) return getBool(interp, v, "-outside", c.outside);
+        if (k == 1) {
+          std::vector<double> vel;
+          if (!getDoubles(interp, v, "-velocity", 3, vel)) return false;
+          c.velocity = Vec2(vel[0], vel[1]);
+          c.spin = vel[2];
+          return true;
+        }
+        if (!getInt(interp, v, "-id", c.id)) return false;
+        if (c.id < 0)
+          return reject(interp, "VALUE ID", "-id must be >= 0, got " + std::to_string(c.id));
+        return true;
+      }))
+    return TCL_ERROR;
+  return guarded(interp, [&] {
+    Tcl_SetObjResult(interp, Tcl_NewIntObj(s.manager.lattice().addCircle(c)));
+    return TCL_OK;
+  });
+}
+
 bool getObstacleId(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int& id) {
   if (objc != 2) {
     Tcl_WrongNumArgs(interp, 1, objv, "ID");
@@ -468,6 +512,21 @@ int ObstacleInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
   if (!getObstacleId(interp, objc, objv, id)) return TCL_ERROR;
   return guarded(interp, [&] {
     const lb::ObstacleInfo o = sessionOf(data).manager.lattice().obstacleInfo(id);
+    if (o.circle) {
+      const lb::CircleObstacle& c = o.disc;
+      Tcl_Obj* circle[3] = {newDouble(c.centre.x()), newDouble(c.centre.y()), newDouble(c.radius)};
+      Tcl_Obj* velocity[3] = {newDouble(c.velocity.x()), newDouble(c.velocity.y()),
+                              newDouble(c.spin)};
+      Tcl_SetObjResult(interp, newDict({{"id", Tcl_NewIntObj(c.id)},
+                                        {"type", Tcl_NewStringObj("circle", -1)},
+                                        {"circle", Tcl_NewListObj(3, circle)},
+                                        {"outside", Tcl_NewBooleanObj(c.outside)},
+                                        {"velocity", Tcl_NewListObj(3, velocity)},
+                                        {"cells", Tcl_NewWideIntObj(Tcl_WideInt(c.cells))},
+                                        {"force", newVec2(o.force)},
+                                        {"torque", newDouble(o.torque)}}));
+      return TCL_OK;
+    }
     Tcl_Obj* rect[4] = {newDouble(o.shape.lo.x()), newDouble(o.shape.lo.y()),
                         newDouble(o.shape.hi.x()), newDouble(o.shape.hi.y())};
     Tcl_SetObjResult(interp, newDict({{"id", Tcl_NewIntObj(o.shape.id)},
@@ -508,6 +567,8 @@ int LatticeHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[])
                           "info                    -> dict nx ny nodes spacing timestep tau ...",
                           "probe {x y}             -> dict density pressure velocity solid ...",
                           "obstacle rect {x0 y0 x1 y1} ?-slip 0|1? ?-id N?   -> id",
+                          "obstacle circle {cx cy r} ?-outside 0|1? ?-velocity {vx vy w}? "
+                          "?-id N?   -> id",
                           "obstacle delete ID", "obstacle info ID    -> dict ... force torque",
                           "obstacles               -> ids", "delete", "help"},
                          kOptions)));
@@ -529,7 +590,10 @@ void registerLatticeCommands(Tcl_Interp* interp, Session* session) {
                 {"help", LatticeHelp}},
                session);
   makeEnsemble(interp, "::sf::lattice::obstacle",
-               {{"rect", ObstacleRect}, {"delete", ObstacleDelete}, {"info", ObstacleInfo}},
+               {{"rect", ObstacleRect},
+                {"circle", ObstacleCircle},
+                {"delete", ObstacleDelete},
+                {"info", ObstacleInfo}},
                session);
 }
 

@@ -8,7 +8,19 @@
 namespace sf::tcl {
 namespace {
 
-enum Opt { kTimestep, kThreads, kGravity, kIntegrator, kMaxOverlap, kOptionCount };
+enum Opt {
+  kTimestep,
+  kThreads,
+  kGravity,
+  kIntegrator,
+  kMaxOverlap,
+  kSolidRatio,
+  kSubsteps,
+  kBuoyancy,
+  kShare,
+  kInterior,
+  kOptionCount
+};
 
 const OptionSpec kOptions[] = {
     {"-timestep", "dt", "fix the timestep (a lattice's tau then follows from it)"},
@@ -20,7 +32,24 @@ const OptionSpec kOptions[] = {
     {"-maxoverlap", "f",
      "a contact overlapping more than f of the smaller element stops the run "
      "(default 0.5)"},
+    {"-solidratio", "exact|1|2|4|8",
+     "solid ratio of covered cells: exact areas (default), or n x n subcell centres per cell "
+     "(1: the stair-step limit)"},
+    {"-substeps", "n",
+     "element steps per fluid step, each dt/n under the step's fluid force "
+     "(default 1)"},
+    {"-buoyancy", "0|1", "static buoyancy -rho_f A g on elements in the fluid (default 1)"},
+    {"-share", "coverage|equal",
+     "force of a cell covered by several solids: by coverage (default) or equal shares "
+     "(the thesis's)"},
+    {"-interior", "equilibrium|collide",
+     "cells deep inside solids: set to the equilibrium at the solid velocity (default), or "
+     "collided with the Noble-Torczynski operator like the rest"},
     {nullptr, nullptr, nullptr}};
+
+const char* const kSolidRatioNames[] = {"exact", "1", "2", "4", "8", nullptr};
+const int kSolidRatioSubcells[] = {coupling::kExact, 1, 2, 4, 8};
+const char* const kInteriorNames[] = {"equilibrium", "collide", nullptr};
 
 Session& sessionOf(ClientData data) {
   return *static_cast<Session*>(data);
@@ -36,8 +65,21 @@ Tcl_Obj* optionValue(const sim::Manager& m, int k) {
       return newVec2(m.gravity());
     case kIntegrator:
       return Tcl_NewStringObj(dem::integratorNames[int(m.assembly().integrator)], -1);
-    default:
+    case kMaxOverlap:
       return newDouble(m.assembly().maxOverlap);
+    case kSolidRatio:
+      for (int i = 0; kSolidRatioNames[i]; ++i)
+        if (kSolidRatioSubcells[i] == m.coupling().subcells)
+          return Tcl_NewStringObj(kSolidRatioNames[i], -1);
+      return Tcl_NewStringObj("exact", -1);
+    case kSubsteps:
+      return Tcl_NewIntObj(m.substeps());
+    case kBuoyancy:
+      return Tcl_NewBooleanObj(m.coupling().buoyancy);
+    case kShare:
+      return Tcl_NewStringObj(coupling::shareNames[int(m.coupling().share)], -1);
+    default:
+      return Tcl_NewStringObj(kInteriorNames[m.coupling().equilibriumInterior ? 0 : 1], -1);
   }
 }
 
@@ -64,9 +106,38 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
   }
   // Stage every value, validate, then commit: a refused option changes nothing.
   std::optional<double> timestep, maxOverlap;
-  std::optional<int> threads, integrator;
+  std::optional<int> threads, integrator, substeps;
   std::optional<Vec2> gravity;
+  coupling::Settings coupled = m.coupling();
   if (!parseOptions(interp, objc, objv, 1, kOptions, [&](int k, Tcl_Obj* v) {
+        int choice = 0;
+        switch (k) {
+          case kSolidRatio:
+            if (!getChoice(interp, v, "solid ratio", kSolidRatioNames, choice)) return false;
+            coupled.subcells = kSolidRatioSubcells[choice];
+            return true;
+          case kSubsteps: {
+            int n = 0;
+            if (!getInt(interp, v, "-substeps", n)) return false;
+            if (n < 1 || n > 1000)
+              return reject(interp, "VALUE SUBSTEPS",
+                            "-substeps must be 1 to 1000, got " + std::to_string(n));
+            substeps = n;
+            return true;
+          }
+          case kBuoyancy:
+            return getBool(interp, v, "-buoyancy", coupled.buoyancy);
+          case kShare:
+            if (!getChoice(interp, v, "share", coupling::shareNames, choice)) return false;
+            coupled.share = static_cast<coupling::Share>(choice);
+            return true;
+          case kInterior:
+            if (!getChoice(interp, v, "interior", kInteriorNames, choice)) return false;
+            coupled.equilibriumInterior = choice == 0;
+            return true;
+          default:
+            break;
+        }
         if (k == kGravity) {
           Vec2 g;
           if (!getVec2(interp, v, "-gravity", g)) return false;
@@ -101,7 +172,9 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
       }))
     return TCL_ERROR;
   return guarded(interp, [&] {
-    if (timestep) m.setTimestep(*timestep);  // the only step that can refuse
+    // The only step that can refuse, before anything changes.
+    if (timestep || substeps) m.setStepping(timestep, substeps);
+    m.setCoupling(coupled);
     if (threads) m.setThreads(*threads);
     if (gravity) m.setGravity(*gravity);
     if (integrator) m.assembly().integrator = static_cast<dem::Integrator>(*integrator);
@@ -134,6 +207,11 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
   for (const std::string& w : m.warnings())
     Tcl_ListObjAppendElement(nullptr, warnings, newString(w));
   const bool stable = !lattice || (std::isfinite(mach) && mach <= m.machStopLimit() && tau > 0.5);
+  // What the fluid exerted on all elements together in the last step.
+  Vec2 fluidForce = Vec2::Zero();
+  double fluidTorque = 0;
+  const dem::Bodies& b = m.assembly().bodies();
+  for (int s = 0; s < b.size(); ++s) fluidForce += b.fluidForce[s], fluidTorque += b.fluidTorque[s];
   Tcl_SetObjResult(
       interp, newDict({{"time", newDouble(m.time())},
                        {"step", Tcl_NewWideIntObj(m.stepCount())},
@@ -150,7 +228,12 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
                        {"threads", Tcl_NewIntObj(m.threads())},
                        {"warnings", warnings},
                        {"kinetic", newDouble(m.assembly().kineticEnergy())},
-                       {"critical", newDouble(m.assembly().criticalTimestep())}}));
+                       {"critical", newDouble(m.assembly().criticalTimestep())},
+                       {"covered", Tcl_NewWideIntObj(
+                                       Tcl_WideInt(m.coupled() ? m.coupler().coveredCells() : 0))},
+                       {"fluidforce", newVec2(fluidForce)},
+                       {"fluidtorque", newDouble(fluidTorque)},
+                       {"substeps", Tcl_NewIntObj(m.substeps())}}));
   return TCL_OK;
 }
 
@@ -163,7 +246,7 @@ int SimHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
       interp, newString(helpText("sim",
                                  {"configure ?-option value ...?", "cget -option",
                                   "info    -> dict time step timestep tau mach elements contacts "
-                                  "bonds broken nodes mlups stable",
+                                  "bonds broken nodes mlups stable covered fluidforce ...",
                                   "help"},
                                  kOptions)));
   return TCL_OK;

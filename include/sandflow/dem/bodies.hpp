@@ -19,6 +19,10 @@ struct Bodies {
   std::vector<int> material;
   std::vector<Vec2> x, v, vHalf, force, appliedForce, acceleration;
   std::vector<double> angle, w, wHalf, torque, appliedTorque;
+  // Set by the fluid coupling each step (zero without a lattice): the
+  // hydrodynamic force and torque, and the static buoyancy -rho_f A g.
+  std::vector<Vec2> fluidForce, buoyancy;
+  std::vector<double> fluidTorque;
   std::vector<double> mass, inertia, invMass, invInertia;
   std::vector<double> reach, extent;  // cached: bounding radius and contact size of the shape
   std::vector<std::uint8_t> hold;     // Hold bits: those degrees of freedom keep v / w

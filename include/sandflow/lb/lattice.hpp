@@ -21,11 +21,30 @@ struct RectObstacle {
   bool slip = false;
 };
 
+// A rigid circular wall of the lattice, solid inside the circle or, with
+// `outside`, outside it (a container). It moves with `velocity` and turns at
+// `spin`; the coupling pass covers its cells with the Noble-Torczynski operator
+// and the exact solid ratio, and reports the load back (setCircleLoad).
+struct CircleObstacle {
+  int id = 0;
+  Vec2 centre = Vec2::Zero();
+  double radius = 0.0;
+  bool outside = false;
+  Vec2 velocity = Vec2::Zero();
+  double spin = 0.0;
+  // Of the last step: the fluid's force and torque (about the centre), cells covered.
+  Vec2 force = Vec2::Zero();
+  double torque = 0.0;
+  std::size_t cells = 0;
+};
+
 struct ObstacleInfo {
+  bool circle = false;  // which of the two shapes is filled in
   RectObstacle shape;
-  std::size_t nodes = 0;      // solid nodes it covers
+  CircleObstacle disc;
+  std::size_t nodes = 0;      // solid nodes (rect) or covered cells (circle)
   Vec2 force = Vec2::Zero();  // force per unit thickness the fluid exerts on it
-  double torque = 0.0;        // about the rectangle's centre
+  double torque = 0.0;        // about the rectangle's or circle's centre
 };
 
 class Lattice {
@@ -47,14 +66,39 @@ class Lattice {
   // One step. On NaN or a Mach number above `machLimit` it throws sf::Error
   // (code "UNSTABLE ...") naming the node, and keeps the state before the step.
   StepStats step(double machLimit = 0.3);
+  // Returns to the state before the last step (once; until anything else changes
+  // the populations), for a coupled step whose solid part fails.
+  void undoStep();
+  struct Times {
+    double bulk = 0, covered = 0, fill = 0;  // seconds, accumulated over steps
+  };
+  const Times& times() const { return times_; }
   void setThreads(int threads);
   int threads() const { return threads_; }
 
-  // Obstacles.
-  int addObstacle(const RectObstacle& rect);  // rect.id < 0: next free id
+  // Obstacles. Rects and circles share one id space.
+  int addObstacle(const RectObstacle& rect);    // rect.id < 0: next free id
+  int addCircle(const CircleObstacle& circle);  // circle.id < 0: next free id
   void deleteObstacle(int id);
   std::vector<int> obstacleIds() const;
   ObstacleInfo obstacleInfo(int id) const;  // throws if unknown
+  const std::vector<CircleObstacle>& circles() const { return circles_; }
+  void setCircleLoad(std::size_t index, const Vec2& force, double torque, std::size_t cells);
+  // Moves the circles by their velocity over dt (wrapping on periodic axes).
+  void advanceCircles(double dt);
+
+  // Cells covered by moving solids for the next step (bulk-fluid nodes only;
+  // see CoveredNode), and the momentum each exchanged in the last step.
+  void setCoveredCells(std::vector<CoveredCell> cells, bool equilibriumInterior);
+  const std::vector<CoveredCell>& coveredCells() const { return covered_.cells; }
+  const std::vector<Vec2>& coveredExchange() const { return covered_.exchange; }
+  // Changes whenever node kinds are rebuilt (walls, rect obstacles).
+  std::uint64_t topologyVersion() const { return topology_; }
+  // Padded index of interior node (i, j), as CoveredCell::node holds it.
+  std::int64_t nodeIndex(int i, int j) const { return index(i, j); }
+  // Solid ratio and solid velocity (physical units) at node (i, j) in the last step.
+  double solidRatio(int i, int j) const;
+  Vec2 solidVelocity(int i, int j) const;
 
   // Fields of interior node (i, j), 0 <= i < nx, 0 <= j < ny, physical units.
   NodeKind kind(int i, int j) const;
@@ -88,7 +132,8 @@ class Lattice {
   void setNodeState(std::int64_t node, double rho, const Vec2& latticeU);
   Vec2 latticeVelocity(std::int64_t node) const;
   // Density and first moment of one node of the population array `f`.
-  void moments(const double* f, std::int64_t node, double& rho, double& jx, double& jy) const;  // pre-collision velocity, lattice units
+  void moments(const double* f, std::int64_t node, double& rho, double& jx,
+               double& jy) const;  // pre-collision velocity, lattice units
   [[noreturn]] void reportInstability(const StepStats& stats, double machLimit) const;
 
   ResolvedLattice p_;
@@ -98,8 +143,13 @@ class Lattice {
   std::vector<NodeKind> kind_;  // per padded node
   std::vector<std::unique_ptr<Node>> kinds_;
   std::vector<RectObstacle> obstacles_;
+  std::vector<CircleObstacle> circles_;
+  CoveredNode covered_;
+  std::uint64_t topology_ = 0;
   int threads_ = 1;
   double lastMach_ = 0.0;
+  bool canUndo_ = false;
+  Times times_;
 };
 
 }  // namespace sf::lb

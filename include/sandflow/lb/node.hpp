@@ -102,6 +102,34 @@ class SlipNode final : public LinkNode {
   const char* name() const override { return "slip"; }
 };
 
+// Cells covered by moving solids (physics.md §2, Noble & Torczynski): a short
+// list rebuilt every step. The bulk loop has already collided these nodes as
+// plain fluid; this pass, run after it, recomputes them from the same pulled
+// populations with the partially-saturated operator
+//   f' = f + (1 - B) (collide(f) - f) + B (Omega^s + S),
+//   Omega^s_i = f_-i - f_i + f_i^eq(rho, u_s) - f_-i^eq(rho, u),  S_i = 3 w_i e_i.F,
+// and records the momentum B sum_i Omega^s_i e_i it gave the fluid. Interior
+// cells (eps = 1 with every neighbour eps = 1) hold no physical fluid: with
+// `equilibriumInterior` they are set to f^eq(rho, u_s) + S, which exchanges the
+// same momentum, rho u_s - j, without carrying a non-equilibrium part.
+struct CoveredCell {
+  std::int64_t node;  // padded index of a bulk-fluid node
+  double eps;         // solid ratio, (0, 1]
+  double ux, uy;      // solid velocity, lattice units
+  bool interior;
+};
+
+class CoveredNode final : public Node {
+ public:
+  std::vector<CoveredCell> cells;
+  bool equilibriumInterior = true;
+  // Per cell, the momentum the last step gave the fluid (lattice units).
+  mutable std::vector<Vec2> exchange;
+  const char* name() const override { return "covered"; }
+  std::size_t count() const override { return cells.size(); }
+  StepStats streamCollide(const StepContext& ctx) const override;
+};
+
 // Interior of fixed solids: removed from the work; kept to be counted.
 class FixedSolidNode final : public Node {
  public:

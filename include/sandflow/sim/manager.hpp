@@ -7,6 +7,9 @@
 #include <string>
 #include <vector>
 
+#include <set>
+
+#include "sandflow/coupling/coupler.hpp"
 #include "sandflow/dem/assembly.hpp"
 #include "sandflow/lb/lattice.hpp"
 
@@ -34,9 +37,23 @@ class Manager {
   // elements alone a tenth of their critical step. 0 when nothing sets one.
   double timestep() const;
   bool timestepFixed() const { return fixedTimestep_.has_value(); }
-  void setTimestep(double dt);
+  void setTimestep(double dt) { setStepping(dt, std::nullopt); }
+  // The timestep and the element substeps per step together: the elements'
+  // step dt / substeps must stay under their critical step. Refuses before
+  // changing anything.
+  void setStepping(std::optional<double> dt, std::optional<int> substeps);
   int threads() const { return threads_; }
   void setThreads(int threads);
+
+  // Fluid-solid coupling (physics.md §2, §3, §5), used whenever the lattice has
+  // something on it that covers cells: elements or circular walls.
+  const coupling::Settings& coupling() const { return coupling_; }
+  void setCoupling(const coupling::Settings& settings);
+  const coupling::Coupler& coupler() const { return coupler_; }
+  bool coupled() const { return coupled_; }
+  // Element steps per fluid step, each dt / n, under the fluid force of the step.
+  int substeps() const { return substeps_; }
+  void setSubsteps(int n) { setStepping(std::nullopt, n); }
 
   double time() const { return time_; }
   long long stepCount() const { return steps_; }
@@ -52,6 +69,11 @@ class Manager {
   std::vector<std::string> takeWarnings();
   const std::vector<std::string>& warnings() const { return warningLog_; }
 
+  struct Times {
+    double fluid = 0, elements = 0;  // seconds, accumulated over steps
+  };
+  const Times& times() const { return times_; }
+
   // Million lattice-node updates per second of the last `run`.
   double mlups() const { return mlups_; }
   void setMlups(double m) { mlups_ = m; }
@@ -60,6 +82,8 @@ class Manager {
   void warn(const std::string& message);
 
   void checkDemTimestep(double dt) const;
+  void coupleBeforeFluid();
+  void stepElements(double dt);
 
   std::unique_ptr<lb::Lattice> lattice_;
   dem::Assembly assembly_;
@@ -70,6 +94,13 @@ class Manager {
   long long steps_ = 0;
   double mlups_ = 0.0;
   bool machWarned_ = false;
+  coupling::Settings coupling_;
+  coupling::Coupler coupler_;
+  bool coupled_ = false;
+  int substeps_ = 1;
+  bool solidMachWarned_ = false;
+  std::set<int> underResolvedWarned_;
+  Times times_;
   std::vector<std::string> pendingWarnings_, warningLog_;
 };
 

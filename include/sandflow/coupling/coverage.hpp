@@ -1,0 +1,39 @@
+#pragma once
+// The solid-ratio pass of physics.md §3: which lattice cells a footprint covers
+// and by how much. Cells well inside get eps = 1 and cells well outside nothing
+// without any area work (the cull); only cells the outline may cross are
+// measured, exactly or by n x n subcell centres.
+#include <cstdint>
+#include <vector>
+
+#include "sandflow/coupling/footprint.hpp"
+
+namespace sf::coupling {
+
+// The lattice as the pass sees it: cell (i, j) is the square of side h whose
+// centre is origin + ((i + 1/2) h, (j + 1/2) h).
+struct Grid {
+  Vec2 origin = Vec2::Zero();
+  double h = 1.0;
+  int nx = 0, ny = 0;
+  bool periodicX = false, periodicY = false;
+};
+
+// How a solid-ratio is measured: subcells 0 means exact areas, else the count
+// of subcell centres inside out of n x n (n = 1 is the binarized stair-step).
+inline constexpr int kExact = 0;
+
+struct CellCover {
+  std::int32_t i, j;  // cell, wrapped into the lattice
+  double eps;         // covered fraction, (0, 1]
+  Vec2 arm;           // cell centre minus the footprint's reference point, unwrapped
+  bool interior;      // eps = 1 and so are its eight neighbours
+};
+
+// Appends the cells that `f` covers. `reference` is the point arms are measured
+// from (the element's centre). Periodic axes wrap; cells beyond a non-periodic
+// edge are dropped.
+void cover(const Footprint& f, const Vec2& reference, const Grid& grid, int subcells,
+           std::vector<CellCover>& out);
+
+}  // namespace sf::coupling

@@ -1,0 +1,88 @@
+#include "sandflow/coupling/coverage.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sf::coupling {
+namespace {
+
+// Wraps a cell index on a periodic axis; -1 when it lies beyond a wall.
+int wrap(int k, int n, bool periodic) {
+  if (k >= 0 && k < n) return k;
+  if (!periodic) return -1;
+  return ((k % n) + n) % n;
+}
+
+double measure(const Footprint& f, const Vec2& lo, double h, int subcells) {
+  if (subcells == kExact) return std::clamp(f.cellArea(lo, h) / (h * h), 0.0, 1.0);
+  const double d = h / subcells;
+  int in = 0;
+  for (int b = 0; b < subcells; ++b)
+    for (int a = 0; a < subcells; ++a) in += f.inside(lo + Vec2((a + 0.5) * d, (b + 0.5) * d));
+  return double(in) / (subcells * subcells);
+}
+
+}  // namespace
+
+void cover(const Footprint& f, const Vec2& reference, const Grid& g, int subcells,
+           std::vector<CellCover>& out) {
+  // The cells to visit, unwrapped: the footprint's box, or the whole lattice.
+  int i0 = 0, i1 = g.nx - 1, j0 = 0, j1 = g.ny - 1;
+  if (!f.everywhere) {
+    i0 = int(std::floor((f.box.lo.x() - g.origin.x()) / g.h));
+    i1 = int(std::floor((f.box.hi.x() - g.origin.x()) / g.h));
+    j0 = int(std::floor((f.box.lo.y() - g.origin.y()) / g.h));
+    j1 = int(std::floor((f.box.hi.y() - g.origin.y()) / g.h));
+    // A box wider than a periodic lattice would visit cells twice.
+    if (g.periodicX) i1 = std::min(i1, i0 + g.nx - 1);
+    if (g.periodicY) j1 = std::min(j1, j0 + g.ny - 1);
+    if (!g.periodicX) i0 = std::max(i0, 0), i1 = std::min(i1, g.nx - 1);
+    if (!g.periodicY) j0 = std::max(j0, 0), j1 = std::min(j1, g.ny - 1);
+  }
+  if (i0 > i1 || j0 > j1) return;
+  const int w = i1 - i0 + 1, hgt = j1 - j0 + 1;
+  // Coverage on the visited block, with a ring of zeros for the interior test.
+  std::vector<double> eps(std::size_t(w + 2) * (hgt + 2), 0.0);
+  auto at = [&](int a, int b) -> double& { return eps[std::size_t(b + 1) * (w + 2) + (a + 1)]; };
+  // Where a cell's centre is seen from the reference point: a container, which
+  // spans the lattice, is seen at the nearest periodic image.
+  const Vec2 period(g.nx * g.h, g.ny * g.h);
+  auto offset = [&](int a, int b) {
+    Vec2 d = g.origin + Vec2((i0 + a + 0.5) * g.h, (j0 + b + 0.5) * g.h) - reference;
+    if (f.everywhere && g.periodicX) d.x() -= period.x() * std::round(d.x() / period.x());
+    if (f.everywhere && g.periodicY) d.y() -= period.y() * std::round(d.y() / period.y());
+    return d;
+  };
+  const double halfDiagonal = g.h * std::sqrt(0.5);
+  const Vec2 half(0.5 * g.h, 0.5 * g.h);
+  for (int b = 0; b < hgt; ++b)
+    for (int a = 0; a < w; ++a) {
+      const Vec2 centre = reference + offset(a, b);
+      const double d = f.distance(centre);
+      at(a, b) = d <= -halfDiagonal            ? 1.0
+                 : d - f.slack >= halfDiagonal ? 0.0
+                                               : measure(f, centre - half, g.h, subcells);
+    }
+  // A container's block is the whole lattice: its ring continues periodically,
+  // and beyond a wall it is solid.
+  if (f.everywhere)
+    for (int b = -1; b <= hgt; ++b)
+      for (int a = -1; a <= w; ++a) {
+        if (a >= 0 && a < w && b >= 0 && b < hgt) continue;
+        const int wa = wrap(a, w, g.periodicX), wb = wrap(b, hgt, g.periodicY);
+        at(a, b) = (wa < 0 || wb < 0) ? 1.0 : at(wa, wb);
+      }
+  for (int b = 0; b < hgt; ++b)
+    for (int a = 0; a < w; ++a) {
+      const double e = at(a, b);
+      if (e <= 0) continue;
+      const int i = wrap(i0 + a, g.nx, g.periodicX), j = wrap(j0 + b, g.ny, g.periodicY);
+      if (i < 0 || j < 0) continue;
+      bool interior = e >= 1;
+      for (int db = -1; db <= 1 && interior; ++db)
+        for (int da = -1; da <= 1 && interior; ++da) interior = at(a + da, b + db) >= 1;
+      out.push_back({i, j, e, offset(a, b), interior});
+    }
+}
+
+}  // namespace sf::coupling

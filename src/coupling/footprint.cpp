@@ -1,0 +1,112 @@
+// Footprints of discs, convex polygons and superquadrics. Polygons answer with
+// their edge lines (exact inside, a lower bound outside) and clip the cell for
+// the exact area; superquadrics test the implicit function per point and use
+// their sampled outline (the same polygon their contacts use) for the area.
+#include "sandflow/coupling/footprint.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "sandflow/dem/polygon.hpp"
+#include "sandflow/dem/superquadric.hpp"
+#include "sandflow/geometry/circle_area.hpp"
+
+namespace sf::coupling {
+namespace {
+
+class CircleFootprint final : public Footprint {
+ public:
+  CircleFootprint(const Vec2& c, double r, bool outside) : c_(c), r_(r), outside_(outside) {
+    box = {c - Vec2(r, r), c + Vec2(r, r)};
+    everywhere = outside;
+  }
+  double distance(const Vec2& x) const override {
+    const double d = (x - c_).norm() - r_;
+    return outside_ ? -d : d;
+  }
+  bool inside(const Vec2& x) const override {
+    return ((x - c_).squaredNorm() <= r_ * r_) != outside_;
+  }
+  double cellArea(const Vec2& lo, double h) const override {
+    const double a = geometry::circleRectangleArea(c_, r_, lo, lo + Vec2(h, h));
+    return outside_ ? h * h - a : a;
+  }
+
+ private:
+  Vec2 c_;
+  double r_;
+  bool outside_;
+};
+
+// A convex polygon, counter-clockwise, with its outward edge normals.
+class PolygonFootprint : public Footprint {
+ public:
+  explicit PolygonFootprint(std::vector<Vec2> vertices) : v_(std::move(vertices)) {
+    box = {v_[0], v_[0]};
+    for (std::size_t i = 0; i < v_.size(); ++i) {
+      box.lo = box.lo.cwiseMin(v_[i]), box.hi = box.hi.cwiseMax(v_[i]);
+      const Vec2 e = v_[(i + 1) % v_.size()] - v_[i];
+      n_.push_back(Vec2(e.y(), -e.x()).normalized());
+    }
+  }
+  double distance(const Vec2& x) const override {
+    double d = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < v_.size(); ++i) d = std::max(d, n_[i].dot(x - v_[i]));
+    return d;
+  }
+  bool inside(const Vec2& x) const override { return distance(x) <= 0; }
+  double cellArea(const Vec2& lo, double h) const override {
+    const std::vector<Vec2> cell = {lo, lo + Vec2(h, 0), lo + Vec2(h, h), lo + Vec2(0, h)};
+    const std::vector<Vec2> part = dem::geometry::clip(cell, v_);
+    return part.size() < 3 ? 0.0 : std::abs(dem::geometry::signedArea(part));
+  }
+
+ protected:
+  std::vector<Vec2> v_, n_;
+};
+
+// The outline polygon is inscribed in the curve: the curve bulges past each
+// edge by at most its sagitta, bounded here by half the longest edge.
+class SuperquadricFootprint final : public PolygonFootprint {
+ public:
+  SuperquadricFootprint(const dem::Superquadric& s, const Vec2& x, double angle)
+      : PolygonFootprint(s.world(x, angle)), shape_(s), x_(x), angle_(angle) {
+    for (std::size_t i = 0; i < v_.size(); ++i)
+      slack = std::max(slack, 0.5 * (v_[(i + 1) % v_.size()] - v_[i]).norm());
+    box.lo -= Vec2(slack, slack), box.hi += Vec2(slack, slack);
+  }
+  bool inside(const Vec2& x) const override {
+    return shape_.implicit(rotated(x - x_, -angle_)) <= 0;
+  }
+
+ private:
+  const dem::Superquadric& shape_;
+  Vec2 x_;
+  double angle_;
+};
+
+}  // namespace
+
+std::unique_ptr<Footprint> footprintOf(const dem::Shape& shape, const Vec2& x, double angle) {
+  switch (shape.type()) {
+    case dem::ShapeType::disc:
+      return std::make_unique<CircleFootprint>(x, static_cast<const dem::Disc&>(shape).radius(),
+                                               false);
+    case dem::ShapeType::polygon:
+      return std::make_unique<PolygonFootprint>(
+          static_cast<const dem::Polygon&>(shape).world(x, angle));
+    case dem::ShapeType::superquadric:
+      return std::make_unique<SuperquadricFootprint>(static_cast<const dem::Superquadric&>(shape),
+                                                     x, angle);
+    case dem::ShapeType::wall:
+      return nullptr;
+  }
+  return nullptr;
+}
+
+std::unique_ptr<Footprint> circleFootprint(const Vec2& centre, double radius, bool outside) {
+  return std::make_unique<CircleFootprint>(centre, radius, outside);
+}
+
+}  // namespace sf::coupling

@@ -1,0 +1,175 @@
+// The coupled step (physics.md §2, §5): signs, momentum, buoyancy,
+// determinism, and the stability watch keeping the state before a failed step.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+#include "coupled_helpers.hpp"
+#include "sandflow/core/error.hpp"
+
+namespace sf {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+TEST(Coupling, DiscMovingThroughStillFluidIsDecelerated) {
+  sim::Manager m;
+  m.createLattice(test::periodicSquare(1.0, 64, 0.01));
+  const int mat = test::softMaterial(m, 4.0);
+  const int id = test::addDisc(m, mat, Vec2(0.5, 0.5), 0.1, Vec2(0.02, 0));
+  for (int k = 0; k < 50; ++k) m.step();
+  const dem::Bodies& b = m.assembly().bodies();
+  const int s = b.slot(id);
+  EXPECT_LT(b.v[s].x(), 0.02);
+  EXPECT_GT(b.v[s].x(), 0.0);
+  EXPECT_LT(b.fluidForce[s].x(), 0.0);  // drag opposes the motion
+  EXPECT_LT(std::abs(b.fluidForce[s].y()), 1e-9 * std::abs(b.fluidForce[s].x()));  // symmetry
+  EXPECT_GT(m.lattice().momentum().x(), 0.0);  // the fluid is dragged along
+  EXPECT_TRUE(m.coupled());
+  EXPECT_GT(m.coupler().coveredCells(), std::size_t(pi * 6.4 * 6.4 * 0.9));
+}
+
+TEST(Coupling, FreeDiscInPeriodicBoxConservesTotalMomentum) {
+  for (bool equilibriumInterior : {true, false}) {
+    sim::Manager m;
+    m.createLattice(test::periodicSquare(1.0, 64, 0.01));
+    coupling::Settings settings;
+    settings.equilibriumInterior = equilibriumInterior;
+    m.setCoupling(settings);
+    const int mat = test::softMaterial(m, 3.0);
+    test::addDisc(m, mat, Vec2(0.43, 0.52), 0.117, Vec2(0.03, -0.017), 0.4);
+    m.step();
+    const Vec2 p0 = test::totalMomentum(m);
+    for (int k = 0; k < 1000; ++k) m.step();
+    const Vec2 p1 = test::totalMomentum(m);
+    EXPECT_LT((p1 - p0).norm(), 1e-9 * p0.norm())
+        << "interior " << (equilibriumInterior ? "equilibrium" : "collide") << ": "
+        << p0.transpose() << " -> " << p1.transpose();
+    // The disc gave most of its momentum to the fluid: the test measured a
+    // real exchange, not a disc that did not couple.
+    const dem::Bodies& b = m.assembly().bodies();
+    EXPECT_LT(b.mass[0] * b.v[0].norm(), 0.8 * p0.norm());
+  }
+}
+
+TEST(Coupling, BuoyancyGivesTheSubmergedWeight) {
+  sim::Manager m;
+  lb::LatticeDef def = test::periodicSquare(1.0, 50, 0.05);
+  def.sides[lb::bottom] = def.sides[lb::top] = lb::SideDef{lb::SideKind::noslip};
+  m.createLattice(def);
+  m.setGravity(Vec2(0, -1e-3));
+  const int heavy = test::addDisc(m, test::softMaterial(m, 3.0), Vec2(0.3, 0.5), 0.1);
+  dem::Material neutral{"neutral"};
+  neutral.density = 1.0;
+  neutral.kn = neutral.ks = 1e-3;
+  const int floating = test::addDisc(m, m.assembly().materials().add(neutral), Vec2(0.7, 0.5), 0.1,
+                                     Vec2::Zero(), 0, dem::holdX | dem::holdY | dem::holdRotation);
+  m.step();
+  const dem::Bodies& b = m.assembly().bodies();
+  const double area = pi * 0.01;
+  EXPECT_NEAR(b.buoyancy[b.slot(heavy)].y(), 1.0 * area * 1e-3, 1e-15);
+  // The neutral disc (held: a free one would need the implicit coupling)
+  // feels no net static force.
+  const int f = b.slot(floating);
+  EXPECT_NEAR(b.mass[f] * -1e-3 + b.buoyancy[f].y(), 0.0, 1e-18);
+  for (int k = 0; k < 100; ++k) m.step();
+  EXPECT_LT(b.v[b.slot(heavy)].y(), -1e-5);  // the heavy one sinks
+  // Without buoyancy the static part is gone.
+  coupling::Settings s = m.coupling();
+  s.buoyancy = false;
+  m.setCoupling(s);
+  m.step();
+  EXPECT_EQ(b.buoyancy[f].y(), 0.0);
+}
+
+// Populations and element state after a coupled run, bit for bit.
+std::vector<double> coupledState(int threads) {
+  sim::Manager m;
+  m.setThreads(threads);
+  lb::LatticeDef def = test::periodicSquare(1.0, 48, 0.02);
+  def.sides[lb::bottom] = def.sides[lb::top] = lb::SideDef{lb::SideKind::noslip};
+  def.forcing = Vec2(1e-4, 0);
+  m.createLattice(def);
+  m.setGravity(Vec2(0, -1e-3));
+  const int mat = test::softMaterial(m, 2.0);
+  for (int k = 0; k < 6; ++k)
+    test::addDisc(m, mat, Vec2(0.15 + 0.14 * k, 0.3 + 0.07 * (k % 3)), 0.05, Vec2(0, 0.001 * k));
+  m.lattice().addCircle({-1, Vec2(0.5, 0.8), 0.08, false, Vec2(0, 0), 0.05});
+  for (int k = 0; k < 200; ++k) m.step();
+  std::vector<double> out(m.lattice().populationData(),
+                          m.lattice().populationData() + m.lattice().populationCount());
+  const dem::Bodies& b = m.assembly().bodies();
+  for (int s = 0; s < b.size(); ++s) {
+    out.insert(out.end(), {b.x[s].x(), b.x[s].y(), b.v[s].x(), b.v[s].y(), b.w[s],
+                           b.fluidForce[s].x(), b.fluidForce[s].y(), b.fluidTorque[s]});
+  }
+  out.push_back(m.lattice().circles()[0].torque);
+  return out;
+}
+
+TEST(Coupling, OneAndTwoThreadsGiveIdenticalResults) {
+  const std::vector<double> a = coupledState(1), b = coupledState(2);
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
+}
+
+TEST(Coupling, TooFastASolidStopsTheStepBeforeAnythingChanges) {
+  sim::Manager m;
+  m.createLattice(test::periodicSquare(1.0, 32, 0.01));
+  const double c = m.lattice().params().latticeSpeed();
+  const int id =
+      test::addDisc(m, test::softMaterial(m, 2.0), Vec2(0.5, 0.5), 0.1, Vec2(0.35 * c, 0));
+  const std::vector<double> before(m.lattice().populationData(),
+                                   m.lattice().populationData() + m.lattice().populationCount());
+  try {
+    m.step();
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), "UNSTABLE SOLIDSPEED");
+    EXPECT_NE(std::string(e.what()).find("element " + std::to_string(id)), std::string::npos);
+  }
+  EXPECT_EQ(m.stepCount(), 0);
+  EXPECT_EQ(
+      std::memcmp(before.data(), m.lattice().populationData(), before.size() * sizeof(double)), 0);
+  EXPECT_EQ(m.assembly().bodies().x[0], Vec2(0.5, 0.5));
+}
+
+TEST(Coupling, FailedElementStepTakesTheFluidBackToo) {
+  sim::Manager m;
+  m.createLattice(test::periodicSquare(1.0, 32, 0.01));
+  const int mat = test::softMaterial(m, 2.0);
+  m.assembly().maxOverlap = 0.05;
+  test::addDisc(m, mat, Vec2(0.4, 0.5), 0.1, Vec2(0.01, 0));
+  test::addDisc(m, mat, Vec2(0.59, 0.5), 0.1);  // overlapping by 10%: refused
+  const std::vector<double> before(m.lattice().populationData(),
+                                   m.lattice().populationData() + m.lattice().populationCount());
+  EXPECT_THROW(m.step(), Error);
+  EXPECT_EQ(m.stepCount(), 0);
+  EXPECT_EQ(
+      std::memcmp(before.data(), m.lattice().populationData(), before.size() * sizeof(double)), 0);
+}
+
+TEST(Coupling, UnderResolvedElementWarnsOnce) {
+  sim::Manager m;
+  m.createLattice(test::periodicSquare(1.0, 20, 0.01));  // h = 0.05
+  test::addDisc(m, test::softMaterial(m, 2.0), Vec2(0.5, 0.5), 0.04);
+  m.step();
+  m.step();
+  const std::vector<std::string> w = m.takeWarnings();
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("under two lattice cells"), std::string::npos);
+}
+
+TEST(Coupling, SceneWithoutSolidsPaysNoCouplingPass) {
+  sim::Manager m;
+  m.createLattice(test::periodicSquare(1.0, 32, 0.01));
+  for (int k = 0; k < 10; ++k) m.step();
+  EXPECT_FALSE(m.coupled());
+  EXPECT_EQ(m.coupler().times().coverage, 0.0);
+  EXPECT_EQ(m.lattice().coveredCells().size(), 0u);
+}
+
+}  // namespace
+}  // namespace sf

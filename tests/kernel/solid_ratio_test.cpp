@@ -1,0 +1,182 @@
+// The solid-ratio pass (physics.md §3): exact circle-square areas, coverage of
+// every shape summed back to its area, the subcell knob converging, the
+// interior flags and periodic wrapping.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "sandflow/coupling/coverage.hpp"
+#include "sandflow/dem/polygon.hpp"
+#include "sandflow/dem/superquadric.hpp"
+#include "sandflow/geometry/circle_area.hpp"
+
+namespace sf {
+namespace {
+
+using coupling::CellCover;
+using coupling::Grid;
+
+constexpr double pi = std::numbers::pi;
+
+Grid grid(int n, double h, bool periodic = false) {
+  Grid g;
+  g.h = h;
+  g.nx = g.ny = n;
+  g.periodicX = g.periodicY = periodic;
+  return g;
+}
+
+double coveredArea(const std::vector<CellCover>& cells, double h) {
+  double a = 0;
+  for (const CellCover& c : cells) a += c.eps * h * h;
+  return a;
+}
+
+// Area by brute force: m x m sample points in the rectangle.
+double sampledArea(const Vec2& c, double r, const Vec2& lo, const Vec2& hi, int m) {
+  int in = 0;
+  for (int b = 0; b < m; ++b)
+    for (int a = 0; a < m; ++a) {
+      const Vec2 p =
+          lo + Vec2((a + 0.5) / m * (hi.x() - lo.x()), (b + 0.5) / m * (hi.y() - lo.y()));
+      in += (p - c).squaredNorm() <= r * r;
+    }
+  return double(in) / (m * m) * (hi.x() - lo.x()) * (hi.y() - lo.y());
+}
+
+TEST(CircleArea, ExactAgainstSamplingAndLimits) {
+  const Vec2 c(0.3, -0.2);
+  const double r = 1.1;
+  EXPECT_DOUBLE_EQ(geometry::circleRectangleArea(c, r, c - Vec2(0.1, 0.1), c + Vec2(0.2, 0.3)),
+                   0.3 * 0.4);  // wholly inside
+  EXPECT_EQ(geometry::circleRectangleArea(c, r, Vec2(5, 5), Vec2(6, 6)), 0.0);
+  EXPECT_NEAR(geometry::circleRectangleArea(c, r, Vec2(-10, -10), Vec2(10, 10)), pi * r * r, 1e-13);
+  // Half and quarter discs.
+  EXPECT_NEAR(geometry::circleRectangleArea(c, r, c - Vec2(2, 2), c + Vec2(0, 2)), 0.5 * pi * r * r,
+              1e-13);
+  EXPECT_NEAR(geometry::circleRectangleArea(c, r, c, c + Vec2(2, 2)), 0.25 * pi * r * r, 1e-13);
+  // Tangent from outside: nothing.
+  EXPECT_NEAR(geometry::circleRectangleArea(c, r, c + Vec2(r, -1), c + Vec2(r + 1, 1)), 0.0, 1e-15);
+  // Random cells cut by the outline against 4000^2 samples (error ~1e-4 of the cell).
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  for (int k = 0; k < 10; ++k) {
+    const Vec2 lo = c + Vec2(u(rng), u(rng));
+    const double h = 0.05 + 0.2 * std::abs(u(rng));
+    const double exact = geometry::circleRectangleArea(c, r, lo, lo + Vec2(h, h));
+    EXPECT_NEAR(exact, sampledArea(c, r, lo, lo + Vec2(h, h), 4000), 2e-4 * h * h) << k;
+  }
+}
+
+TEST(SolidRatio, ExactCoverageSumsToTheShapeArea) {
+  const double h = 0.01;
+  const Grid g = grid(100, h);
+  std::vector<CellCover> cells;
+  coupling::cover(*coupling::circleFootprint(Vec2(0.4137, 0.5521), 0.1234, false),
+                  Vec2(0.4137, 0.5521), g, coupling::kExact, cells);
+  EXPECT_NEAR(coveredArea(cells, h), pi * 0.1234 * 0.1234, 1e-12);
+
+  // A rotated pentagon.
+  Vec2 centroid;
+  const dem::Polygon pentagon = dem::Polygon::fromVertices(
+      {{0, 0}, {0.2, -0.05}, {0.3, 0.12}, {0.15, 0.25}, {-0.02, 0.15}}, centroid);
+  const Vec2 at(0.5037, 0.4411);
+  cells.clear();
+  coupling::cover(*coupling::footprintOf(pentagon, at, 0.7), at, g, coupling::kExact, cells);
+  EXPECT_NEAR(coveredArea(cells, h), pentagon.area(), 1e-12);
+
+  // A superquadric: its sampled outline, within the outline's own area error.
+  const dem::Superquadric sq(0.15, 0.08, 4, 2.5, 400);
+  cells.clear();
+  coupling::cover(*coupling::footprintOf(sq, at, 0.3), at, g, coupling::kExact, cells);
+  EXPECT_NEAR(coveredArea(cells, h), sq.area(), 2e-4 * sq.area());
+}
+
+TEST(SolidRatio, SubcellsConvergeToTheExactRatio) {
+  const double h = 0.02;
+  const Grid g = grid(50, h);
+  const Vec2 c(0.5011, 0.4973);
+  const auto f = coupling::circleFootprint(c, 0.2037, false);
+  std::vector<CellCover> exact;
+  coupling::cover(*f, c, g, coupling::kExact, exact);
+  double previous = 1e300;
+  for (int n : {1, 2, 4, 8}) {
+    std::vector<CellCover> cells;
+    coupling::cover(*f, c, g, n, cells);
+    // Same cells (the cull does not depend on n), ratios approach the exact ones.
+    double err = 0;
+    std::size_t k = 0;
+    for (const CellCover& e : exact) {
+      while (k < cells.size() && (cells[k].j < e.j || (cells[k].j == e.j && cells[k].i < e.i))) {
+        err += cells[k].eps * cells[k].eps;  // covered by sampling only
+        ++k;
+      }
+      const double got =
+          k < cells.size() && cells[k].i == e.i && cells[k].j == e.j ? cells[k++].eps : 0.0;
+      err += (got - e.eps) * (got - e.eps);
+    }
+    err = std::sqrt(err / exact.size());
+    EXPECT_LT(err, previous) << n;
+    previous = err;
+  }
+  EXPECT_LT(previous, 0.01);
+}
+
+TEST(SolidRatio, InteriorCellsHaveFullyCoveredNeighbours) {
+  const double h = 0.01;
+  const Grid g = grid(100, h);
+  const Vec2 c(0.5, 0.5);
+  std::vector<CellCover> cells;
+  coupling::cover(*coupling::circleFootprint(c, 0.2, false), c, g, coupling::kExact, cells);
+  std::vector<double> eps(100 * 100, 0.0);
+  for (const CellCover& k : cells) eps[k.j * 100 + k.i] = k.eps;
+  int interior = 0;
+  for (const CellCover& k : cells) {
+    bool all = k.eps >= 1;
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int di = -1; di <= 1; ++di) all = all && eps[(k.j + dj) * 100 + k.i + di] >= 1;
+    EXPECT_EQ(k.interior, all) << k.i << " " << k.j;
+    interior += k.interior;
+    // Arms point from the centre to the cell centre.
+    EXPECT_NEAR((k.arm - (Vec2((k.i + 0.5) * h, (k.j + 0.5) * h) - c)).norm(), 0, 1e-15);
+  }
+  // A disc of radius 20 cells: the interior is the disc shrunk by about 1.5 cells.
+  EXPECT_NEAR(interior, pi * 18.5 * 18.5, 0.05 * pi * 18.5 * 18.5);
+}
+
+TEST(SolidRatio, PeriodicEdgesWrapAndWallsCut) {
+  const double h = 0.01;
+  const Vec2 c(0.98, 0.02);  // overlaps the right and bottom edges
+  const double r = 0.1;
+  std::vector<CellCover> cells;
+  coupling::cover(*coupling::circleFootprint(c, r, false), c, grid(100, h, true), coupling::kExact,
+                  cells);
+  EXPECT_NEAR(coveredArea(cells, h), pi * r * r, 1e-12);
+  for (const CellCover& k : cells) {
+    EXPECT_TRUE(k.i >= 0 && k.i < 100 && k.j >= 0 && k.j < 100);
+    EXPECT_LE(k.arm.norm(), r + h);  // unwrapped: measured from the centre itself
+  }
+  cells.clear();
+  coupling::cover(*coupling::circleFootprint(c, r, false), c, grid(100, h, false), coupling::kExact,
+                  cells);
+  // Without periodic axes only the quarter-ish inside the lattice stays.
+  const double inside = geometry::circleRectangleArea(c, r, Vec2(0, 0), Vec2(1, 1));
+  EXPECT_NEAR(coveredArea(cells, h), inside, 1e-12);
+}
+
+TEST(SolidRatio, ContainerCoversTheOutsideAtTheNearestImage) {
+  const double h = 0.02;
+  const Grid g = grid(50, h, true);
+  const double r = 0.3;
+  for (const Vec2& c : {Vec2(0.5, 0.5), Vec2(0.93, 0.08)}) {
+    std::vector<CellCover> cells;
+    coupling::cover(*coupling::circleFootprint(c, r, true), c, g, coupling::kExact, cells);
+    EXPECT_NEAR(coveredArea(cells, h), 1.0 - pi * r * r, 1e-12) << c.transpose();
+    for (const CellCover& k : cells) EXPECT_GE(k.arm.norm(), r - h);
+  }
+}
+
+}  // namespace
+}  // namespace sf
