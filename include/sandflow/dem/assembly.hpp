@@ -13,7 +13,8 @@
 namespace sf::dem {
 
 enum class Integrator { central = 0, euler = 1, verlet = 2 };
-inline constexpr const char* integratorNames[] = {"central", "euler", "verlet"};
+// Null-terminated: also the table of "sim configure -integrator".
+inline constexpr const char* integratorNames[] = {"central", "euler", "verlet", nullptr};
 
 struct ElementDef {
   std::unique_ptr<Shape> shape;

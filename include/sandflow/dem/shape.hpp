@@ -10,8 +10,9 @@ namespace sf::dem {
 
 enum class ShapeType : std::uint8_t { disc = 0, polygon = 1, superquadric = 2, wall = 3 };
 inline constexpr int kShapeTypes = 4;
-inline constexpr const char* shapeTypeNames[kShapeTypes] = {"disc", "polygon", "superquadric",
-                                                            "wall"};
+// Null-terminated: also the table of "element ids -type" (Tcl_GetIndexFromObjStruct).
+inline constexpr const char* shapeTypeNames[kShapeTypes + 1] = {"disc", "polygon", "superquadric",
+                                                                "wall", nullptr};
 
 struct Box {
   Vec2 lo, hi;
