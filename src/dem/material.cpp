@@ -1,6 +1,7 @@
 #include "sandflow/dem/material.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <numbers>
 
@@ -9,10 +10,13 @@
 namespace sf::dem {
 namespace {
 
+// errorCode "VALUE DENSITY" for -density, like every other VALUE code.
 void require(bool ok, const char* option, const std::string& rule, double value) {
-  if (!ok)
-    throw Error(std::string("VALUE ") + (option + 1),
-                std::string(option) + " must be " + rule + ", got " + formatNumber(value));
+  if (ok) return;
+  std::string code = "VALUE ";
+  for (const char* c = option + 1; *c; ++c)
+    code += char(std::toupper(static_cast<unsigned char>(*c)));
+  throw Error(code, std::string(option) + " must be " + rule + ", got " + formatNumber(value));
 }
 
 }  // namespace

@@ -109,6 +109,12 @@ bool applyOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first
         m.poisson = d;
         break;
     }
+    // Range checks here, not only in the table, so that errorInfo names the option.
+    try {
+      dem::validate(m);
+    } catch (const Error& e) {
+      return reject(interp, e.code(), e.what());
+    }
     return true;
   });
 }
