@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <sstream>
 
 namespace sf::tcl {
@@ -59,6 +60,17 @@ bool getDouble(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, double& out) 
 }
 
 bool getInt(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, int& out) {
+  // Tcl_GetIntFromObj takes 2147483648 to 4294967295 as negative numbers (for
+  // unsigned values): refuse what an int cannot hold, in Tcl's words.
+  Tcl_WideInt wide = 0;
+  if (Tcl_GetWideIntFromObj(nullptr, obj, &wide) == TCL_OK &&
+      (wide < std::numeric_limits<int>::min() || wide > std::numeric_limits<int>::max())) {
+    const char* message = "integer value too large to represent";
+    Tcl_SetObjResult(interp, Tcl_NewStringObj(message, -1));
+    Tcl_SetErrorCode(interp, "ARITH", "IOVERFLOW", message, nullptr);
+    noteOption(interp, what);
+    return false;
+  }
   if (Tcl_GetIntFromObj(interp, obj, &out) == TCL_OK) return true;
   noteOption(interp, what);
   return false;
