@@ -24,7 +24,16 @@ namespace eval ::sf {
     foreach verb {create delete ids info help} {dict set map $verb ::sf::source::$verb}
     # Any other first word is Tcl's "source ?-encoding name? FILE".
     namespace ensemble create -command ::source -map $map -prefixes 0 \
-        -unknown {apply {{ensemble word args} {list ::sf::TclSource $word}}}
+        -unknown {apply {{ensemble word args} {list ::sf::TclSourceFile $word}}}
+  }
+  # Tcl's "source", with its own message under its own name (the renamed
+  # command would say "::sf::TclSource" in it).
+  proc TclSourceFile {args} {
+    if {[llength $args] != 1 && [llength $args] != 3} {
+      return -code error -errorcode {TCL WRONGARGS} \
+          {wrong # args: should be "source ?-encoding name? fileName"}
+    }
+    tailcall ::sf::TclSource {*}$args
   }
 }
 )tcl";
