@@ -22,9 +22,12 @@ std::uint64_t pairKey(int a, int b) {
 }  // namespace
 
 int Assembly::nextId() const {
-  int next = 0;
-  for (int id : bodies_.id) next = std::max(next, id + 1);
-  return next;
+  long long next = 0;  // the largest id + 1, which int cannot hold after 2147483647
+  for (int id : bodies_.id) next = std::max(next, id + 1LL);
+  if (next > std::numeric_limits<int>::max())
+    throw Error("VALUE ID", "element id " + std::to_string(next - 1) +
+                                " is in use and is the largest there is: give new elements an id");
+  return int(next);
 }
 
 int Assembly::slot(int id) const {

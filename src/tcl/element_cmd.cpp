@@ -631,8 +631,10 @@ int ElementNext(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
     Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
-  Tcl_SetObjResult(interp, Tcl_NewIntObj(sessionOf(data).manager.assembly().nextId()));
-  return TCL_OK;
+  return guarded(interp, [&] {
+    Tcl_SetObjResult(interp, Tcl_NewIntObj(sessionOf(data).manager.assembly().nextId()));
+    return TCL_OK;
+  });
 }
 
 int helpFor(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], const char* noun,
