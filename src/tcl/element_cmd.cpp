@@ -79,7 +79,7 @@ const Table& wallTable() {
   return t;
 }
 const Table& polygonTable() {
-  static const Table t{fVertices, fMaterial, fVelocity, fFix, fForce, fAcceleration, fId};
+  static const Table t{fVertices, fMaterial, fAngle, fVelocity, fFix, fForce, fAcceleration, fId};
   return t;
 }
 const Table& ellipseTable() {
