@@ -369,6 +369,12 @@ int SuperquadricCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* c
   if (!e.axes) return fail(interp, "VALUE AXES", "superquadric create needs -axes {a b}");
   if (!e.exponents)
     return fail(interp, "VALUE EXPONENTS", "superquadric create needs -exponents {m n}");
+  if (e.sides && *e.sides < 8) {  // the outline samples: the kernel takes no fewer than 8
+    fail(interp, "VALUE SIDES",
+         "-sides must be 8 to 10000 for a superquadric, got " + std::to_string(*e.sides));
+    noteOptionOnce(interp, "-sides");
+    return TCL_ERROR;
+  }
   return guarded(interp, [&] {
     ElementDef def;
     def.shape = std::make_unique<dem::Superquadric>(e.axes->x(), e.axes->y(), e.exponents->x(),
