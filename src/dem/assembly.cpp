@@ -410,10 +410,13 @@ void Assembly::step(double dt, const Vec2& gravity) {
   auto t0 = Clock::now();
   Bodies& b = bodies_;
   const int n = b.size();
+  bondsPending_ = false;
+  std::vector<Vec2> x0;  // verlet moves before it checks: the pose to go back to
+  std::vector<double> a0;
   if (integrator == Integrator::verlet) {
     // Kick-drift with the forces of the previous step, then forces, then kick.
-    const std::vector<Vec2> x0 = b.x;
-    const std::vector<double> a0 = b.angle;
+    x0 = b.x;
+    a0 = b.angle;
     for (int s = 0; s < n; ++s)
       if (!b.started[s]) b.force[s] = Vec2::Zero(), b.torque[s] = 0, b.started[s] = 1;
     for (int s = 0; s < n; ++s) {
@@ -451,8 +454,19 @@ void Assembly::step(double dt, const Vec2& gravity) {
   }
   times_.narrow += since(t0);
   t0 = Clock::now();
+  try {
+    checkSpeeds(dt);
+  } catch (...) {
+    if (integrator == Integrator::verlet) b.x = x0, b.angle = a0;
+    throw;
+  }
+  // Nothing can fail now: the bonds' breaks of this step stand.
+  if (bondsPending_) {
+    bonds_.swap(pendingBonds_);
+    breaks_.insert(breaks_.end(), pendingBreaks_.begin(), pendingBreaks_.end());
+    bondsPending_ = false;
+  }
   servoPlates(dt);
-  checkSpeeds(dt);
   integrate(dt);
   time_ += dt;
   if (!sources_.empty()) spawnClones();

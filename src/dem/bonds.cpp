@@ -132,9 +132,14 @@ const Bond& Assembly::bondInfo(int bondId) const {
 // separation; across it, the anchors' sideways offset. Damped like a contact.
 void Assembly::bondForces(double dt, const std::vector<Vec2>& v, const std::vector<double>& w) {
   Bodies& B = bodies_;
-  std::vector<Bond> kept;
+  // The bonds that hold and the breaks are committed by step() once nothing
+  // in the step can fail (a failed step keeps its bonds).
+  std::vector<Bond>& kept = pendingBonds_;
+  kept.clear();
   kept.reserve(bonds_.size());
-  for (Bond& x : bonds_) {
+  pendingBreaks_.clear();
+  bondsPending_ = true;
+  for (Bond x : bonds_) {
     const int a = B.slot(x.idA), b = B.slot(x.idB);
     const Vec2 ra = rotated(x.anchorA, B.angle[a]), rb = rotated(x.anchorB, B.angle[b]);
     const Vec2 pa = B.x[a] + ra, pb = B.x[b] + rb;
@@ -146,8 +151,8 @@ void Assembly::bondForces(double dt, const std::vector<Vec2>& v, const std::vect
     const double tension = x.stiffness * stretch;
     const double shear = x.stiffness * offset.norm();
     if (tension > x.strength || shear > x.shearStrength) {
-      breaks_.push_back({time_ + dt, 0.5 * (pa + pb), std::atan2(n.y(), n.x()), x.id, x.idA, x.idB,
-                         tension > x.strength});
+      pendingBreaks_.push_back({time_ + dt, 0.5 * (pa + pb), std::atan2(n.y(), n.x()), x.id, x.idA,
+                                x.idB, tension > x.strength});
       continue;
     }
     x.force = -x.stiffness * (stretch * n + offset) - x.damping * vrel;
@@ -157,7 +162,6 @@ void Assembly::bondForces(double dt, const std::vector<Vec2>& v, const std::vect
     B.torque[b] += cross(rb, x.force);
     kept.push_back(x);
   }
-  bonds_.swap(kept);
 }
 
 }  // namespace sf::dem

@@ -145,6 +145,10 @@ class Assembly {
   StepTimes times_;
   std::vector<Bond> bonds_;
   std::vector<BondBreak> breaks_;
+  // A step's bonds and breaks, until the step is sure to succeed.
+  std::vector<Bond> pendingBonds_;
+  std::vector<BondBreak> pendingBreaks_;
+  bool bondsPending_ = false;
   std::vector<Source> sources_;
   // Per-step scratch, kept to avoid allocating in the step.
   std::vector<Vec2> scratchShear_;
