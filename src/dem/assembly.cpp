@@ -417,8 +417,27 @@ void Assembly::step(double dt, const Vec2& gravity) {
     // Kick-drift with the forces of the previous step, then forces, then kick.
     x0 = b.x;
     a0 = b.angle;
-    for (int s = 0; s < n; ++s)
-      if (!b.started[s]) b.force[s] = Vec2::Zero(), b.torque[s] = 0, b.started[s] = 1;
+    if (std::find(b.started.begin(), b.started.end(), 0) != b.started.end()) {
+      // An element without a previous step (new, or set by hand) kicks with the
+      // force at its present state: evaluate it, keeping the contact history
+      // (the step's own evaluation follows) and the others' forces.
+      const std::vector<Vec2> f0 = b.force;
+      const std::vector<double> torque0 = b.torque;
+      updatePairs();
+      const std::vector<Contact> history = contacts_;
+      try {
+        computeForces(dt, gravity, false);
+      } catch (...) {
+        b.force = f0, b.torque = torque0, contacts_ = history;
+        throw;
+      }
+      contacts_ = history;
+      for (int s = 0; s < n; ++s)
+        if (b.started[s])
+          b.force[s] = f0[s], b.torque[s] = torque0[s];
+        else
+          b.started[s] = 1;
+    }
     for (int s = 0; s < n; ++s) {
       Vec2 a = b.force[s] / b.mass[s];
       double alpha = b.torque[s] / b.inertia[s];
