@@ -44,6 +44,7 @@ int Assembly::add(ElementDef def) {
       !std::isfinite(def.w) || !def.force.allFinite() || !std::isfinite(def.torque) ||
       !def.acceleration.allFinite())
     throw Error("VALUE NUMBER", "element position, velocity and forces must be finite");
+  checkMass(*def.shape, materials_[def.material]);
   if (def.id < 0) def.id = nextId();
   if (bodies_.slot(def.id) >= 0)
     throw Error("EXISTS ELEMENT", "element id " + std::to_string(def.id) + " is in use");
@@ -70,6 +71,17 @@ void Assembly::remove(int id) {
   std::erase_if(sources_, [&](const Source& x) { return x.id == id; });
   std::erase_if(bonds_, [&](const Bond& x) { return x.idA == id || x.idB == id; });
   touched();
+}
+
+void Assembly::checkMass(const Shape& shape, const Material& material) {
+  const double m = material.density * shape.area(), inertia = m * shape.inertiaPerMass();
+  if (!(std::isfinite(m) && m > 0))
+    throw Error("VALUE MASS", "an element's mass, density " + formatNumber(material.density) +
+                                  " x area " + formatNumber(shape.area()) +
+                                  ", must be finite and > 0, got " + formatNumber(m));
+  if (!(std::isfinite(inertia) && inertia > 0))
+    throw Error("VALUE MASS", "an element's moment of inertia must be finite and > 0, got " +
+                                  formatNumber(inertia) + " (mass " + formatNumber(m) + ")");
 }
 
 void Assembly::updateMass(int s) {

@@ -495,7 +495,7 @@ int ElementConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
   if ((e.from || e.to) && (e.center || e.angle))
     return fail(interp, "VALUE WALL", "give a wall -from/-to or -center/-angle, not both");
   std::optional<dem::Wall> newWall;
-  Vec2 wallCenter;
+  Vec2 wallCenter = Vec2::Zero();
   double wallAngle = 0;
   if (e.from || e.to) {
     const auto& w = static_cast<const dem::Wall&>(*b.shape[slot]);
@@ -507,10 +507,20 @@ int ElementConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
     wallCenter = 0.5 * (p + q);
     wallAngle = std::atan2((q - p).y(), (q - p).x());
   }
+  std::optional<dem::Disc> newDisc;
+  if (e.radius) newDisc.emplace(*e.radius);
+  const dem::Shape& newShape = newDisc   ? static_cast<const dem::Shape&>(*newDisc)
+                               : newWall ? static_cast<const dem::Shape&>(*newWall)
+                                         : *b.shape[slot];
+  try {
+    dem::Assembly::checkMass(newShape, a.materials()[e.material.value_or(b.material[slot])]);
+  } catch (const Error& error) {
+    return fail(interp, error);
+  }
   // Everything is checked: apply.
   if (e.center) b.x[slot] = *e.center;
   if (e.angle) b.angle[slot] = *e.angle;
-  if (e.radius) b.shape[slot] = std::make_unique<dem::Disc>(*e.radius);
+  if (newDisc) b.shape[slot] = newDisc->clone();
   if (newWall) {
     b.shape[slot] = newWall->clone();
     b.x[slot] = wallCenter;

@@ -163,6 +163,8 @@ int MaterialConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* co
       return TCL_ERROR;
     }
     if (!applyOptions(interp, objc, objv, 2, m)) return TCL_ERROR;
+    for (int s = 0; s < a.bodies().size(); ++s)  // a new density must leave every mass finite
+      if (a.bodies().material[s] == index) dem::Assembly::checkMass(*a.bodies().shape[s], m);
     a.materials().replace(index, m);
     for (int s = 0; s < a.bodies().size(); ++s)
       if (a.bodies().material[s] == index) a.updateMass(s);

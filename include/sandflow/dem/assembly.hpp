@@ -72,6 +72,10 @@ class Assembly {
   const Bodies& bodies() const { return bodies_; }
   // Recomputes mass and inertia of a slot after its shape or material changed.
   void updateMass(int slot);
+  // Throws sf::Error ("VALUE MASS") unless an element of this shape and
+  // material has a finite, positive mass and inertia (a huge or tiny size, or
+  // density, can overflow or underflow them).
+  static void checkMass(const Shape& shape, const Material& material);
   void touched() { dess_.reset(), pairsValid_ = false; }  // geometry changed by hand
 
   // One step. Throws sf::Error ("UNSTABLE ...") before changing anything when a
