@@ -1,0 +1,67 @@
+# dem_helpers.tcl -- procedures shared by the tests of the discrete-element
+# commands (material, element, bond, source, sim for elements); sourced after
+# helpers.tcl, not a test file itself.
+
+# Everything a user can read back about the elements, materials, bonds and
+# sources, to show that a refused command changed nothing.
+proc demState {} {
+    set state [list ids [element ids] next [catch {element next} next] $next]
+    foreach name [material names] {
+        lappend state material $name [material configure $name]
+    }
+    foreach id [element ids] {
+        lappend state element $id [element configure $id] [element info $id]
+    }
+    foreach id [bond ids] {
+        lappend state bond $id [bond info $id]
+    }
+    lappend state broken [bond broken]
+    foreach id [::sf::source ids] {
+        lappend state source $id [::sf::source info $id]
+    }
+    lappend state sim [sim configure] simInfo [dict remove [sim info] mlups threads]
+    return $state
+}
+
+# Runs each command of `commands` (a list of scripts) that must fail; returns
+# the ones that were accepted ("accepted: ...") or that changed the scene.
+proc refusedChangeNothing {commands} {
+    set problems {}
+    foreach command $commands {
+        set before [demState]
+        if {![catch {uplevel 1 $command} message]} {
+            lappend problems "accepted: $command"
+        } elseif {[demState] ne $before} {
+            lappend problems "changed the scene: $command ($message)"
+        }
+    }
+    return $problems
+}
+
+# The result of a script that must fail, with its errorCode.
+proc failure {script} {
+    if {![catch {uplevel 1 $script} message options]} {
+        return "no error (result \"$message\")"
+    }
+    return [list $message [dict get $options -errorcode]]
+}
+
+# The keys of `dict` that are missing from it, of those in `keys`.
+proc missingKeys {dict keys} {
+    set missing {}
+    foreach key $keys {
+        if {![dict exists $dict $key]} {lappend missing $key}
+    }
+    return $missing
+}
+
+# The words of `words` that do not occur in `text`.
+proc missingWords {text words} {
+    set missing {}
+    foreach word $words {
+        if {[string first $word $text] < 0} {lappend missing $word}
+    }
+    return $missing
+}
+
+set pi [expr {acos(-1)}]
