@@ -62,7 +62,7 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   circles_.resize(circles.size());
 
   // 1. Coverage of whatever moved (or changed shape) since it was measured.
-#pragma omp parallel for schedule(dynamic, 4) num_threads(threads)
+#pragma omp parallel for schedule(dynamic, 4) num_threads(threads) if (n >= 16)
   for (int s = 0; s < n; ++s) {
     Cached& c = elements_[s];
     if (!covers(b, s)) {
@@ -184,7 +184,7 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
     const bool within = (grid.periodicX || (box.lo.x() >= lo.x() && box.hi.x() <= hi.x())) &&
                         (grid.periodicY || (box.lo.y() >= lo.y() && box.hi.y() <= hi.y()));
     const double area = within ? b.shape[s]->area() : submerged[s] * cellArea;
-    b.buoyancy[s] = -rho * area * gravity;
+    b.buoyancy[s] = Vec2::Zero() - rho * area * gravity;  // no -0 without gravity
   }
   times_.forces += since(t0);
 }

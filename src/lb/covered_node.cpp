@@ -61,7 +61,7 @@ StepStats runAll(const StepContext& ctx, const CoveredNode& node) {
   const std::ptrdiff_t n = std::ptrdiff_t(node.cells.size());
   const std::ptrdiff_t blocks = (n + kBlock - 1) / kBlock;
   std::vector<StepStats> partial(blocks);
-#pragma omp parallel for schedule(static) num_threads(ctx.threads)
+#pragma omp parallel for schedule(static) num_threads(ctx.threads) if (n >= kParallelNodes / 4)
   for (std::ptrdiff_t b = 0; b < blocks; ++b)
     partial[b] = runBlock<C, S>(ctx, node, b * kBlock, std::min(n, (b + 1) * kBlock));
   StepStats total;

@@ -65,7 +65,10 @@ template <Collision C, ForceScheme S>
 StepStats runSpans(const StepContext& ctx, const std::vector<FluidNode::Span>& spans) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(spans.size());
   std::vector<StepStats> partial(spans.size());
-#pragma omp parallel for schedule(static) num_threads(ctx.threads)
+  // Small lattices stay on one thread: a parallel region costs more than it saves.
+  std::ptrdiff_t nodes = 0;
+  for (const FluidNode::Span& s : spans) nodes += s.length;
+#pragma omp parallel for schedule(static) num_threads(ctx.threads) if (nodes >= kParallelNodes)
   for (std::ptrdiff_t k = 0; k < n; ++k)
     partial[k] = runSpan<C, S>(ctx, spans[k].first, spans[k].length);
   StepStats total;
