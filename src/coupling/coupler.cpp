@@ -1,5 +1,6 @@
 #include "sandflow/coupling/coupler.hpp"
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -47,7 +48,7 @@ bool Coupler::stale(const Cached& c, int id, const Vec2& x, double angle, double
 }
 
 void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const Settings& settings,
-                      int threads) {
+                      const Vec2& gravity, int threads) {
   const auto t0 = Clock::now();
   const Grid grid = gridOf(lattice);
   const dem::Bodies& b = assembly.bodies();
@@ -91,12 +92,10 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   epsSum_.clear();
   owners_.clear();
   cellOf_.resize(std::size_t(lattice.nx() + 2) * (lattice.ny() + 2), -1);
-  const double toLattice = lattice.params().dt / lattice.params().h;
-  auto add = [&](int owner, const CellCover& cc, const Vec2& velocity) {
+  auto add = [&](int owner, const CellCover& cc) {
     if (lattice.kind(cc.i, cc.j) != lb::NodeKind::fluid) return;
     const std::int64_t node = lattice.nodeIndex(cc.i, cc.j);
     std::int32_t& k = cellOf_[node];
-    const Vec2 u = velocity * toLattice;
     if (k < 0) {
       k = std::int32_t(cells.size());
       cells.push_back({node, 0.0, 0.0, 0.0, cc.interior});
@@ -105,26 +104,25 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     } else {
       cells[k].interior = false;
     }
-    lb::CoveredCell& cell = cells[k];
-    cell.ux += cc.eps * u.x();
-    cell.uy += cc.eps * u.y();
     epsSum_[k] += cc.eps;
     ++owners_[k];
     pieces_.push_back({k, owner, cc.eps, cc.arm});
   };
   for (int s = 0; s < n; ++s)
-    for (const CellCover& cc : elements_[s].cells) add(s, cc, b.v[s] + spin(b.w[s], cc.arm));
+    for (const CellCover& cc : elements_[s].cells) add(s, cc);
   for (std::size_t k = 0; k < circles.size(); ++k)
-    for (const CellCover& cc : circles_[k].cells)
-      add(-1 - int(k), cc, circles[k].velocity + spin(circles[k].spin, cc.arm));
-  fastest_ = SolidSpeed{};
+    for (const CellCover& cc : circles_[k].cells) add(-1 - int(k), cc);
   for (std::size_t k = 0; k < cells.size(); ++k) {
-    lb::CoveredCell& cell = cells[k];
-    cellOf_[cell.node] = -1;
-    cell.eps = std::min(1.0, epsSum_[k]);
-    cell.ux /= epsSum_[k];
-    cell.uy /= epsSum_[k];
+    cellOf_[cells[k].node] = -1;
+    cells[k].eps = std::min(1.0, epsSum_[k]);
   }
+  // Rigid velocities (vx, vy, w) of the owners: elements as they are, or
+  // solved with the exchange they will cause; circles as prescribed.
+  velocity_.resize(n);
+  for (int s = 0; s < n; ++s) velocity_[s] = Vec3(b.v[s].x(), b.v[s].y(), b.w[s]);
+  if (settings.implicit) solveVelocities(lattice, assembly, settings, cells, gravity);
+  blendVelocities(lattice, circles, cells);
+  fastest_ = SolidSpeed{};
   // The fastest surface that the fluid sees (interior cells move no fluid).
   for (const Piece& p : pieces_) {
     const lb::CoveredCell& cell = cells[p.cell];
@@ -139,6 +137,104 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   cells_ = cells.size();
   lattice.setCoveredCells(std::move(cells), settings.equilibriumInterior);
   times_.coverage += since(t0);
+}
+
+// Each cell's solid velocity: the coverage-weighted mean of its owners' rigid
+// velocities at the cell centre, in lattice units.
+void Coupler::blendVelocities(const lb::Lattice& lattice,
+                              const std::vector<lb::CircleObstacle>& circles,
+                              std::vector<lb::CoveredCell>& cells) const {
+  const double toLattice = lattice.params().dt / lattice.params().h;
+  for (lb::CoveredCell& cell : cells) cell.ux = cell.uy = 0;
+  for (const Piece& p : pieces_) {
+    const Vec2 v = p.owner >= 0
+                       ? Vec2(velocity_[p.owner].x(), velocity_[p.owner].y()) +
+                             spin(velocity_[p.owner].z(), p.arm)
+                       : circles[-1 - p.owner].velocity + spin(circles[-1 - p.owner].spin, p.arm);
+    const double weight = p.eps / epsSum_[p.cell] * toLattice;
+    cells[p.cell].ux += weight * v.x();
+    cells[p.cell].uy += weight * v.y();
+  }
+}
+
+// The implicit coupling. The momentum a cell gives the fluid is linear in the
+// solid velocity, E = beta (rho u_s - j) with beta = B (1 for an equilibrium
+// interior), so an element's fluid force is F(V) = -K V + F0 for its rigid
+// velocity V = (vx, vy, w). Solving the element's update together with it,
+//   M (V - V0) = c dt (F_other + F(V)),   c = 1/2 (central, verlet) or 1 (euler),
+// gives the velocity the fluid sees. Its interior fluid then cannot feed the
+// one-step oscillation that makes the explicit coupling of light elements
+// unstable (|lambda| = r / (2 + r) < 1 for any fluid-to-solid mass ratio r).
+// Cells shared with other solids count the others' velocities as given.
+void Coupler::solveVelocities(const lb::Lattice& lattice, const dem::Assembly& assembly,
+                              const Settings& settings, const std::vector<lb::CoveredCell>& cells,
+                              const Vec2& gravity) {
+  const lb::ResolvedLattice& p = lattice.params();
+  const dem::Bodies& b = assembly.bodies();
+  const double dt = p.dt, toLattice = dt / p.h, scale = p.h * p.h * p.h / (dt * dt);
+  const double tau = p.tau;
+  std::vector<double> rho;
+  std::vector<Vec2> j;
+  lattice.pulledMoments(cells, rho, j);
+  // The explicit cell velocities, to take the other owners' part from.
+  std::vector<lb::CoveredCell> given = cells;
+  blendVelocities(lattice, lattice.circles(), given);
+
+  const int n = b.size();
+  std::vector<Eigen::Matrix3d> K(n, Eigen::Matrix3d::Zero());
+  std::vector<Vec3> F0(n, Vec3::Zero());
+  for (const Piece& piece : pieces_) {
+    if (piece.owner < 0) continue;
+    const lb::CoveredCell& cell = cells[piece.cell];
+    const double beta = cell.interior && settings.equilibriumInterior
+                            ? 1.0
+                            : cell.eps * (tau - 0.5) / ((1.0 - cell.eps) + (tau - 0.5));
+    const double share = settings.share == Share::equal ? 1.0 / owners_[piece.cell]
+                                                        : piece.eps / epsSum_[piece.cell];
+    const double alpha = piece.eps / epsSum_[piece.cell];
+    const double r = rho[piece.cell];
+    const Vec2& arm = piece.arm;
+    const Vec3& V = velocity_[piece.owner];
+    // This owner's own part of the explicit cell velocity, and the others'.
+    const Vec2 own = alpha * toLattice * (Vec2(V.x(), V.y()) + spin(V.z(), arm));
+    const Vec2 others = Vec2(given[piece.cell].ux, given[piece.cell].uy) - own;
+    const double g = scale * toLattice * share * beta * r * alpha;
+    Eigen::Matrix3d k;
+    k << 1, 0, -arm.y(), 0, 1, arm.x(), -arm.y(), arm.x(), arm.squaredNorm();
+    K[piece.owner] += g * k;
+    const Vec2 f = scale * share * beta * (j[piece.cell] - r * others);
+    F0[piece.owner] += Vec3(f.x(), f.y(), cross(arm, f));
+  }
+  const double c = assembly.integrator == dem::Integrator::euler ? 1.0 : 0.5;
+  for (int s = 0; s < n; ++s) {
+    if (K[s].isZero()) continue;
+    const bool central = assembly.integrator == dem::Integrator::central && b.started[s];
+    const Vec3 base = central ? Vec3(b.vHalf[s].x(), b.vHalf[s].y(), b.wHalf[s]) : velocity_[s];
+    // Every force but the fluid's, as the last step left it.
+    Vec3 other;
+    if (b.started[s]) {
+      other << b.force[s].x() - b.fluidForce[s].x(), b.force[s].y() - b.fluidForce[s].y(),
+          b.torque[s] - b.fluidTorque[s];
+    } else {
+      const Vec2 f = b.appliedForce[s] + b.mass[s] * (gravity + b.acceleration[s]) + b.buoyancy[s];
+      other << f.x(), f.y(), b.appliedTorque[s];
+    }
+    const Vec3 M(b.mass[s], b.mass[s], b.inertia[s]);
+    Eigen::Matrix3d A = c * dt * K[s];
+    A.diagonal() += M;
+    Vec3 rhs = M.cwiseProduct(base) + c * dt * (other + F0[s]);
+    // Held degrees of freedom keep their prescribed velocity.
+    const std::uint8_t hold[3] = {dem::holdX, dem::holdY, dem::holdRotation};
+    for (int d = 0; d < 3; ++d)
+      if (b.hold[s] & hold[d]) {
+        rhs -= A.col(d) * velocity_[s][d];
+        A.row(d).setZero();
+        A.col(d).setZero();
+        A(d, d) = 1;
+        rhs[d] = velocity_[s][d];
+      }
+    velocity_[s] = A.ldlt().solve(rhs);
+  }
 }
 
 void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Settings& settings,

@@ -378,6 +378,21 @@ void Lattice::setCoveredCells(std::vector<CoveredCell> cells, bool equilibriumIn
   covered_.exchange.assign(covered_.cells.size(), Vec2::Zero());
 }
 
+void Lattice::pulledMoments(const std::vector<CoveredCell>& cells, std::vector<double>& rho,
+                            std::vector<Vec2>& j) const {
+  rho.resize(cells.size());
+  j.resize(cells.size());
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    double r = 0, jx = 0, jy = 0;
+    for (int d = 0; d < 9; ++d) {
+      const double f = f_[d * stride_ + cells[k].node - (d2q9::ex[d] + d2q9::ey[d] * rowStride_)];
+      r += f, jx += d2q9::ex[d] * f, jy += d2q9::ey[d] * f;
+    }
+    rho[k] = r;
+    j[k] = Vec2(jx, jy);
+  }
+}
+
 double Lattice::solidRatio(int i, int j) const {
   const std::int64_t x = index(i, j);
   for (const CoveredCell& c : covered_.cells)

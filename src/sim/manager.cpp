@@ -107,7 +107,7 @@ void Manager::setThreads(int threads) {
 // surface faster than the Mach limit stops the step before anything changes;
 // one above the warning limit, or an element spanning under two cells, warns.
 void Manager::coupleBeforeFluid() {
-  coupler_.prepare(*lattice_, assembly_, coupling_, threads_);
+  coupler_.prepare(*lattice_, assembly_, coupling_, gravity_, threads_);
   const coupling::SolidSpeed& fast = coupler_.fastest();
   const std::string who = fast.element >= 0 ? "element " + std::to_string(fast.element)
                                             : "obstacle " + std::to_string(fast.obstacle);

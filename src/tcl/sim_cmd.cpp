@@ -19,6 +19,7 @@ enum Opt {
   kBuoyancy,
   kShare,
   kInterior,
+  kCoupling,
   kOptionCount
 };
 
@@ -45,11 +46,15 @@ const OptionSpec kOptions[] = {
     {"-interior", "equilibrium|collide",
      "cells deep inside solids: set to the equilibrium at the solid velocity (default), or "
      "collided with the Noble-Torczynski operator like the rest"},
+    {"-coupling", "explicit|implicit",
+     "velocity the fluid sees: the element's at the start of the step (default, the thesis's), "
+     "or solved with the force it causes (stable for light elements)"},
     {nullptr, nullptr, nullptr}};
 
 const char* const kSolidRatioNames[] = {"exact", "1", "2", "4", "8", nullptr};
 const int kSolidRatioSubcells[] = {coupling::kExact, 1, 2, 4, 8};
 const char* const kInteriorNames[] = {"equilibrium", "collide", nullptr};
+const char* const kCouplingNames[] = {"explicit", "implicit", nullptr};
 
 Session& sessionOf(ClientData data) {
   return *static_cast<Session*>(data);
@@ -78,8 +83,10 @@ Tcl_Obj* optionValue(const sim::Manager& m, int k) {
       return Tcl_NewBooleanObj(m.coupling().buoyancy);
     case kShare:
       return Tcl_NewStringObj(coupling::shareNames[int(m.coupling().share)], -1);
-    default:
+    case kInterior:
       return Tcl_NewStringObj(kInteriorNames[m.coupling().equilibriumInterior ? 0 : 1], -1);
+    default:
+      return Tcl_NewStringObj(kCouplingNames[m.coupling().implicit ? 1 : 0], -1);
   }
 }
 
@@ -134,6 +141,10 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
           case kInterior:
             if (!getChoice(interp, v, "interior", kInteriorNames, choice)) return false;
             coupled.equilibriumInterior = choice == 0;
+            return true;
+          case kCoupling:
+            if (!getChoice(interp, v, "coupling", kCouplingNames, choice)) return false;
+            coupled.implicit = choice == 1;
             return true;
           default:
             break;

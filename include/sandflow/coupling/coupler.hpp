@@ -13,6 +13,8 @@
 
 namespace sf::coupling {
 
+using Vec3 = Eigen::Vector3d;
+
 // How a cell covered by several solids shares its force: in proportion to each
 // one's coverage (exact), or equally (the thesis's per-node counter).
 enum class Share { coverage = 0, equal = 1 };
@@ -23,6 +25,7 @@ struct Settings {
   Share share = Share::coverage;
   bool buoyancy = true;             // static buoyancy -rho_f A g on immersed elements
   bool equilibriumInterior = true;  // interior cells at f^eq(rho, u_s) (see lb::CoveredNode)
+  bool implicit = false;            // element velocity solved with its exchange (solveVelocities)
 };
 
 // The fastest solid surface over the fluid in the last `prepare`.
@@ -44,7 +47,7 @@ class Coupler {
   // Covers the lattice for the next step. Only what moved since the last call is
   // measured again. Nothing in the scene changes until setCoveredCells at the end.
   void prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const Settings& settings,
-               int threads);
+               const Vec2& gravity, int threads);
   // After the lattice step: the fluid force and torque on every element (and
   // the buoyancy, for `gravity`), and the load on every circular wall.
   void collect(lb::Lattice& lattice, dem::Assembly& assembly, const Settings& settings,
@@ -70,6 +73,11 @@ class Coupler {
     bool outside = false;
     std::vector<CellCover> cells;
   };
+  void blendVelocities(const lb::Lattice& lattice, const std::vector<lb::CircleObstacle>& circles,
+                       std::vector<lb::CoveredCell>& cells) const;
+  void solveVelocities(const lb::Lattice& lattice, const dem::Assembly& assembly,
+                       const Settings& settings, const std::vector<lb::CoveredCell>& cells,
+                       const Vec2& gravity);
   bool stale(const Cached& c, int id, const Vec2& x, double angle, double area, double reach,
              double radius, bool outside) const;
 
@@ -78,6 +86,7 @@ class Coupler {
   std::vector<std::int32_t> cellOf_;  // per padded node: covered-cell index, or -1
   std::vector<double> epsSum_;        // per covered cell
   std::vector<std::int32_t> owners_;  // per covered cell
+  std::vector<Vec3> velocity_;        // per element: (vx, vy, w) the fluid sees
   std::uint64_t topology_ = 0;
   Settings measuredWith_;
   std::size_t cells_ = 0;

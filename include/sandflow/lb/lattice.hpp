@@ -91,6 +91,10 @@ class Lattice {
   // see CoveredNode), and the momentum each exchanged in the last step.
   void setCoveredCells(std::vector<CoveredCell> cells, bool equilibriumInterior);
   const std::vector<CoveredCell>& coveredCells() const { return covered_.cells; }
+  // Density and first moment (lattice units) of the populations that the
+  // given cells will pull in the next step, before any collision.
+  void pulledMoments(const std::vector<CoveredCell>& cells, std::vector<double>& rho,
+                     std::vector<Vec2>& j) const;
   const std::vector<Vec2>& coveredExchange() const { return covered_.exchange; }
   // Changes whenever node kinds are rebuilt (walls, rect obstacles).
   std::uint64_t topologyVersion() const { return topology_; }
