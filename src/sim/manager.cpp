@@ -100,6 +100,7 @@ void Manager::setThreads(int threads) {
   if (threads < 1)
     throw Error("VALUE THREADS", "-threads must be >= 1, got " + std::to_string(threads));
   threads_ = threads;
+  assembly_.threads = threads;
   if (lattice_) lattice_->setThreads(threads);
 }
 

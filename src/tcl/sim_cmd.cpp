@@ -184,7 +184,15 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
     return TCL_ERROR;
   return guarded(interp, [&] {
     // The only step that can refuse, before anything changes.
-    if (timestep || substeps) m.setStepping(timestep, substeps);
+    if (timestep || substeps) {
+      try {
+        m.setStepping(timestep, substeps);
+      } catch (const Error& e) {
+        fail(interp, e);
+        noteOptionOnce(interp, substeps && !timestep ? "-substeps" : "-timestep");
+        return TCL_ERROR;
+      }
+    }
     m.setCoupling(coupled);
     if (threads) m.setThreads(*threads);
     if (gravity) m.setGravity(*gravity);
