@@ -1,34 +1,221 @@
 // The DEM benchmark bed of shared/reference/dem-bed.md: N discs, radii uniform
 // in [0.5, 1] mm, settled under gravity in a box open at the top, then timed.
-// Prints particle-steps per second of the timed phase, contacts per disc, the
-// kinetic energy at its end and the time per step by stage.
+// Prints, per thread count, particle-steps per second of the timed phase,
+// contacts per disc, the kinetic energy at its end and the time per step by
+// stage.
 //
-//   sandflow_dem_bed N ?settle? ?timed? ?threads?
+//   sandflow_dem_bed N ?settle? ?timed? ?threads? ?options?
+//
+//   threads           a list, e.g. 1,2: the settle runs once (with the most
+//                     threads; the step is deterministic, so the state does
+//                     not depend on it), then each count is timed in turn
+//   --reps R          time the phase R times per thread count (each R x
+//                     `timed` steps further on) and report the best; contacts
+//                     per disc and kinetic energy are those of the first
+//                     repetition (step settle + timed, as dem-bed.md defines)
+//   --trace K         print the kinetic energy and more every K steps of the settle
+//   --fine S K        ... and every K steps after step S (to resolve the bed's
+//                     vertical oscillation, tens of ms, without printing all of it)
+//   --diagnose        where the kinetic energy sits at the end of the settle
+//   --restitution E   not the benchmark: another restitution (default 0.5) or
+//   --friction M      friction coefficient (default 0.5), to see what damps
+//                     the settle's residual motion
+//
+// The time per step is split into pair upkeep (the skin check and, when it
+// fires, the DESS sort and contact-list merge), narrow phase, forces and
+// integration (with the stability checks). The step computes the overlap and
+// the force of a pair in one loop, so the narrow phase alone is timed here as
+// a separate pass of collide() over the same candidate pairs (best of 5), and
+// forces are that loop's time less the narrow pass. The timing covers the
+// steps only (contacts are counted between them, untimed). other_cpu_s: CPU
+// seconds other processes used during the best repetition (from /proc/stat).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <numbers>
 #include <random>
+#include <string>
+#include <vector>
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include "sandflow/dem/assembly.hpp"
 
 using namespace sf;
 using namespace sf::dem;
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Contacts of each slot (walls included as partners).
+std::vector<int> contactCounts(const Assembly& a) {
+  std::vector<int> count(a.bodies().size(), 0);
+  for (const Contact& c : a.contacts())
+    if (c.touching) ++count[c.a], ++count[c.b];
+  return count;
+}
+
+struct Energy {
+  double translational = 0, rotational = 0, vmax = 0, vy = 0, y = 0, mass = 0;
+};
+Energy energy(const Assembly& a) {
+  const Bodies& b = a.bodies();
+  Energy e;
+  double py = 0, my = 0;
+  for (int s = 0; s < b.size(); ++s) {
+    if (b.invMass[s] == 0) continue;
+    e.translational += 0.5 * b.mass[s] * b.v[s].squaredNorm();
+    e.rotational += 0.5 * b.inertia[s] * b.w[s] * b.w[s];
+    e.vmax = std::max(e.vmax, b.v[s].norm());
+    py += b.mass[s] * b.v[s].y();
+    my += b.mass[s] * b.x[s].y();
+    e.mass += b.mass[s];
+  }
+  e.vy = py / e.mass;
+  e.y = my / e.mass;
+  return e;
+}
+
+// Where the kinetic energy sits: the fastest discs, discs by contact count,
+// discs on a wall, layers of height, and the bed's mean motion.
+void diagnose(const Assembly& a, int walls) {
+  const Bodies& b = a.bodies();
+  const std::vector<int> count = contactCounts(a);
+  std::vector<char> onWall(b.size(), 0);
+  for (const Contact& c : a.contacts())
+    if (c.touching && (c.a < walls || c.b < walls)) onWall[c.a] = onWall[c.b] = 1;
+  std::vector<double> ke;
+  std::vector<std::pair<double, int>> bySpeed;
+  double top = 0, total = 0;
+  for (int s = walls; s < b.size(); ++s) top = std::max(top, b.x[s].y());
+  double byCount[4] = {}, wall = 0, layer[5] = {}, cx = 0, cy = 0, mass = 0, wallRot = 0;
+  int nCount[4] = {}, nWall = 0;
+  for (int s = walls; s < b.size(); ++s) {
+    const double k = 0.5 * b.mass[s] * b.v[s].squaredNorm() + 0.5 * b.inertia[s] * b.w[s] * b.w[s];
+    total += k;
+    ke.push_back(k);
+    bySpeed.push_back({b.v[s].norm(), s});
+    const int c = std::min(count[s], 3);
+    byCount[c] += k, ++nCount[c];
+    if (onWall[s]) wall += k, wallRot += 0.5 * b.inertia[s] * b.w[s] * b.w[s], ++nWall;
+    layer[std::min(4, int(5 * b.x[s].y() / top))] += k;
+    cx += b.mass[s] * b.v[s].x(), cy += b.mass[s] * b.v[s].y(), mass += b.mass[s];
+  }
+  std::sort(ke.rbegin(), ke.rend());
+  std::sort(bySpeed.rbegin(), bySpeed.rend());
+  const int n = int(ke.size());
+  double top1 = 0, top10 = 0;
+  for (int i = 0; i < n; ++i) {
+    if (i < n / 100) top1 += ke[i];
+    if (i < n / 10) top10 += ke[i];
+  }
+  std::printf("diagnose: kinetic=%.3g J/m, mean motion M vcm^2/2=%.3g (vcm=%.3g,%.3g m/s)\n", total,
+              0.5 * (cx * cx + cy * cy) / mass, cx / mass, cy / mass);
+  std::printf("  share of the fastest 1%%: %.1f%%, fastest 10%%: %.1f%%\n", 100 * top1 / total,
+              100 * top10 / total);
+  for (int c = 0; c < 4; ++c)
+    std::printf("  discs with %s contacts: %6d, %.1f%% of the energy\n",
+                c == 3 ? ">=3" : std::to_string(c).c_str(), nCount[c], 100 * byCount[c] / total);
+  std::printf("  discs on a wall: %d, %.1f%% of the energy (%.1f%% of it rotation)\n", nWall,
+              100 * wall / total, wall > 0 ? 100 * wallRot / wall : 0.0);
+  for (int l = 0; l < 5; ++l)
+    std::printf("  height layer %d/5 (bottom = 1): %.1f%% of the energy\n", l + 1,
+                100 * layer[l] / total);
+  for (int i = 0; i < 5 && i < n; ++i) {
+    const int s = bySpeed[i].second;
+    std::printf("  fast disc %d: |v|=%.3g m/s w=%.3g rad/s at (%.4g, %.4g) m, %d contacts%s\n",
+                b.id[s], bySpeed[i].first, b.w[s], b.x[s].x(), b.x[s].y(), count[s],
+                onWall[s] ? ", on a wall" : "");
+  }
+}
+
+// CPU seconds the whole machine spent busy (as scripts/bench counts them:
+// user, nice, system, irq, softirq, steal) and those of this process.
+double machineBusy() {
+  std::FILE* f = std::fopen("/proc/stat", "r");
+  if (!f) return 0;
+  unsigned long long v[8] = {};
+  const int got = std::fscanf(f, "cpu %llu %llu %llu %llu %llu %llu %llu %llu", &v[0], &v[1], &v[2],
+                              &v[3], &v[4], &v[5], &v[6], &v[7]);
+  std::fclose(f);
+  if (got < 8) return 0;
+  return double(v[0] + v[1] + v[2] + v[5] + v[6] + v[7]) / double(sysconf(_SC_CLK_TCK));
+}
+double ownCpu() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+// One pass of the narrow phase alone over the current candidate pairs.
+double narrowPass(const Assembly& a, int threads) {
+  const Bodies& b = a.bodies();
+  const std::vector<Contact>& cs = a.contacts();
+  const std::ptrdiff_t nc = std::ptrdiff_t(cs.size());
+  long hits = 0;
+  const auto t0 = Clock::now();
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(+ : hits)
+  for (std::ptrdiff_t k = 0; k < nc; ++k) {
+    const Contact& c = cs[k];
+    Manifold m;
+    hits += collide(*b.shape[c.a], {b.x[c.a], b.angle[c.a]}, *b.shape[c.b],
+                    {b.x[c.b], b.angle[c.b]}, m);
+  }
+  const double t = since(t0);
+  if (hits < 0) std::printf("?");  // keeps the loop
+  return t;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  const int n = argc > 1 ? std::atoi(argv[1]) : 10000;
-  const long settle = argc > 2 ? std::atol(argv[2]) : 100000;
-  const long timed = argc > 3 ? std::atol(argv[3]) : 2000;
-  const int threads = argc > 4 ? std::atoi(argv[4]) : 1;
+  std::vector<std::string> pos;
+  int reps = 1, trace = 0, fine = 0;
+  long fineFrom = 0;
+  bool diag = false;
+  double restitution = 0.5, friction = 0.5;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--reps") && i + 1 < argc)
+      reps = std::max(1, std::atoi(argv[++i]));
+    else if (!std::strcmp(argv[i], "--trace") && i + 1 < argc)
+      trace = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--fine") && i + 2 < argc)
+      fineFrom = std::atol(argv[i + 1]), fine = std::atoi(argv[i + 2]), i += 2;
+    else if (!std::strcmp(argv[i], "--restitution") && i + 1 < argc)
+      restitution = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--friction") && i + 1 < argc)
+      friction = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--diagnose"))
+      diag = true;
+    else
+      pos.push_back(argv[i]);
+  }
+  const int n = pos.size() > 0 ? std::atoi(pos[0].c_str()) : 10000;
+  const long settle = pos.size() > 1 ? std::atol(pos[1].c_str()) : 100000;
+  const long timed = pos.size() > 2 ? std::atol(pos[2].c_str()) : 2000;
+  std::vector<int> threadList;
+  for (const char* p = pos.size() > 3 ? pos[3].c_str() : "1"; *p;) {
+    threadList.push_back(std::max(1, std::atoi(p)));
+    while (*p && *p != ',') ++p;
+    if (*p == ',') ++p;
+  }
 
   Assembly a;
-  a.threads = threads;
+  a.threads = *std::max_element(threadList.begin(), threadList.end());
   Material m{"glass"};
   m.density = 2650;
   m.kn = m.ks = 1e5;
-  m.restitution = 0.5;
-  m.friction = 0.5;
+  m.restitution = restitution;
+  m.friction = friction;
   const int mat = a.materials().add(m);
 
   const double pitch = 2.05e-3;
@@ -47,6 +234,7 @@ int main(int argc, char** argv) {
   wall({0, 0}, {W, 0});
   wall({0, 0}, {0, H});
   wall({W, 0}, {W, H});
+  const int walls = 3;
   std::mt19937 rng(12345);
   std::uniform_real_distribution<double> radius(0.5e-3, 1.0e-3), jitter(-0.02e-3, 0.02e-3);
   for (int i = 0; i < n; ++i) {
@@ -60,25 +248,76 @@ int main(int argc, char** argv) {
   const double mMin = 2650 * std::numbers::pi * 0.25e-6;
   const double dt = 2 * std::sqrt(mMin / 1e5) / 20;
   const Vec2 g(0, -9.81);
-  using Clock = std::chrono::steady_clock;
+
   const auto s0 = Clock::now();
-  for (long s = 0; s < settle; ++s) a.step(dt, g);
-  const double settleSeconds = std::chrono::duration<double>(Clock::now() - s0).count();
-  const StepTimes before = a.times();
-  double contacts = 0;
-  const auto t0 = Clock::now();
-  for (long s = 0; s < timed; ++s) {
+  for (long s = 0; s < settle; ++s) {
     a.step(dt, g);
-    contacts += double(a.touchingCount());
+    if ((trace > 0 && (s + 1) % trace == 0) ||
+        (fine > 0 && s + 1 >= fineFrom && (s + 1) % fine == 0)) {
+      const Energy e = energy(a);
+      std::printf(
+          "trace step=%ld t=%.4f kinetic=%.4g translational=%.4g rotational=%.4g "
+          "vmax=%.3g vcm_y=%.3g ycm=%.7g contacts_per_disc=%.3f\n",
+          s + 1, a.time(), e.translational + e.rotational, e.translational, e.rotational, e.vmax,
+          e.vy, e.y, double(a.touchingCount()) / n);
+      std::fflush(stdout);
+    }
   }
-  const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-  const StepTimes& after = a.times();
-  const double per = 1e6 / double(timed);
-  std::printf(
-      "N=%d threads=%d dt=%.3g settle_s=%.1f timed_s=%.3f psps=%.4g contacts_per_disc=%.3f "
-      "kinetic=%.3g sort_us=%.1f narrow_us=%.1f integrate_us=%.1f builds=%lld\n",
-      n, threads, dt, settleSeconds, seconds, n * double(timed) / seconds, contacts / timed / n,
-      a.kineticEnergy(), (after.sort - before.sort) * per, (after.narrow - before.narrow) * per,
-      (after.integrate - before.integrate) * per, a.broadPhaseBuilds());
+  const double settleSeconds = since(s0);
+  if (diag) diagnose(a, walls);
+
+  bool first = true;
+  double contactsFirst = 0, discContactsFirst = 0, kineticFirst = 0, translationalFirst = 0;
+  for (int threads : timed > 0 ? threadList : std::vector<int>{}) {
+    a.threads = threads;
+    double best = 1e300, worst = 0, bestSort = 0, bestNarrow = 0, bestIntegrate = 0;
+    double bestOther = 0, otherTotal = 0, timedTotal = 0;
+    long builds = 0;
+    for (int r = 0; r < reps; ++r) {
+      const StepTimes before = a.times();
+      const long long builds0 = a.broadPhaseBuilds();
+      double contacts = 0, discContacts = 0, seconds = 0;
+      const double busy0 = machineBusy(), own0 = ownCpu();
+      for (long s = 0; s < timed; ++s) {
+        const auto t0 = Clock::now();
+        a.step(dt, g);
+        seconds += since(t0);
+        // Counted outside the timing: each contact once, walls included; and
+        // disc-disc contacts alone (what LAMMPS's contact/atom counts).
+        for (const Contact& c : a.contacts())
+          if (c.touching) contacts += 1, discContacts += c.a >= walls;
+      }
+      const double other = std::max(0.0, (machineBusy() - busy0) - (ownCpu() - own0));
+      otherTotal += other, timedTotal += seconds;
+      const StepTimes& after = a.times();
+      if (first) {
+        contactsFirst = contacts / timed / n, discContactsFirst = discContacts / timed / n;
+        const Energy e = energy(a);
+        kineticFirst = e.translational + e.rotational, translationalFirst = e.translational;
+      }
+      first = false;
+      worst = std::max(worst, seconds);
+      if (seconds < best) {
+        best = seconds, bestOther = other;
+        bestSort = (after.sort - before.sort) / timed;
+        bestNarrow = (after.narrow - before.narrow) / timed;
+        bestIntegrate = (after.integrate - before.integrate) / timed;
+        builds = long(a.broadPhaseBuilds() - builds0);
+      }
+    }
+    double narrowOnly = 1e300;
+    for (int r = 0; r < 5; ++r) narrowOnly = std::min(narrowOnly, narrowPass(a, threads));
+    narrowOnly = std::min(narrowOnly, bestNarrow);
+    std::printf(
+        "N=%d threads=%d dt=%.3g settle_s=%.1f timed_s=%.3f reps=%d psps=%.4g psps_min=%.4g "
+        "contacts_per_disc=%.3f disc_contacts_per_disc=%.3f kinetic=%.3g translational=%.3g "
+        "sort_us=%.1f narrow_us=%.1f forces_us=%.1f integrate_us=%.1f step_us=%.1f "
+        "builds=%ld other_cpu_s=%.2f other_cpu_all_s=%.2f timed_all_s=%.2f\n",
+        n, threads, dt, settleSeconds, best, reps, n * double(timed) / best,
+        n * double(timed) / worst, contactsFirst, discContactsFirst, kineticFirst,
+        translationalFirst, bestSort * 1e6, narrowOnly * 1e6, (bestNarrow - narrowOnly) * 1e6,
+        bestIntegrate * 1e6, best / timed * 1e6, builds, bestOther, otherTotal, timedTotal);
+    std::fflush(stdout);
+  }
   return 0;
 }
