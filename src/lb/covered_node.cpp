@@ -24,26 +24,29 @@ StepStats runBlock(const StepContext& ctx, const CoveredNode& node, std::ptrdiff
   StepStats stats;
   for (std::ptrdiff_t k = first; k < last; ++k) {
     const CoveredCell& cell = node.cells[k];
-    double f[Q], fc[Q];
+    double f[Q];
     for (int i = 0; i < Q; ++i)
-      f[i] = fc[i] = ctx.src[i * ctx.stride + cell.node - (ex[i] + ey[i] * ctx.rowStride)];
-    double u2;
-    const double rho = collide<C, S>(fc, p, u2);
-    double jx = 0, jy = 0;
-    for (int i = 0; i < Q; ++i) jx += ex[i] * f[i], jy += ey[i] * f[i];
-    double out[Q];
+      f[i] = ctx.src[i * ctx.stride + cell.node - (ex[i] + ey[i] * ctx.rowStride)];
+    double rho = 0, jx = 0, jy = 0;
+    for (int i = 0; i < Q; ++i) rho += f[i], jx += ex[i] * f[i], jy += ey[i] * f[i];
+    double solid[Q], out[Q];
+    equilibria(rho, cell.ux, cell.uy, solid);
     Vec2 gave;
+    double u2;
     if (cell.interior && node.equilibriumInterior) {
-      for (int i = 0; i < Q; ++i) out[i] = equilibrium(i, rho, cell.ux, cell.uy) + source[i];
+      for (int i = 0; i < Q; ++i) out[i] = solid[i] + source[i];
       gave = Vec2(rho * cell.ux - jx, rho * cell.uy - jy);
+      u2 = (jx * jx + jy * jy) / (rho * rho);
     } else {
-      const double ux = jx / rho, uy = jy / rho;
+      double fc[Q], fluid[Q];
+      for (int i = 0; i < Q; ++i) fc[i] = f[i];
+      collide<C, S>(fc, p, u2);
+      equilibria(rho, jx / rho, jy / rho, fluid);
       const double b = cell.eps * (tau - 0.5) / ((1.0 - cell.eps) + (tau - 0.5));
       double gx = 0, gy = 0;
       for (int i = 0; i < Q; ++i) {
         const int o = opposite[i];
-        const double omega =
-            f[o] - f[i] + equilibrium(i, rho, cell.ux, cell.uy) - equilibrium(o, rho, ux, uy);
+        const double omega = f[o] - f[i] + solid[i] - fluid[o];
         out[i] = f[i] + (1.0 - b) * (fc[i] - f[i]) + b * (omega + source[i]);
         gx += ex[i] * omega, gy += ey[i] * omega;
       }
@@ -61,7 +64,7 @@ StepStats runAll(const StepContext& ctx, const CoveredNode& node) {
   const std::ptrdiff_t n = std::ptrdiff_t(node.cells.size());
   const std::ptrdiff_t blocks = (n + kBlock - 1) / kBlock;
   std::vector<StepStats> partial(blocks);
-#pragma omp parallel for schedule(static) num_threads(ctx.threads) if (n >= kParallelNodes / 4)
+#pragma omp parallel for schedule(static) num_threads(ctx.threads) if (n >= kParallelNodes)
   for (std::ptrdiff_t b = 0; b < blocks; ++b)
     partial[b] = runBlock<C, S>(ctx, node, b * kBlock, std::min(n, (b + 1) * kBlock));
   StepStats total;

@@ -35,6 +35,18 @@ inline double equilibrium(int i, double rho, double ux, double uy) {
   return d2q9::w[i] * rho * (1.0 + 3.0 * eu + 4.5 * eu * eu - 1.5 * (ux * ux + uy * uy));
 }
 
+// All nine equilibria at once, sharing the even and odd parts of each pair.
+inline void equilibria(double rho, double ux, double uy, double (&feq)[d2q9::Q]) {
+  const double even = 1.0 - 1.5 * (ux * ux + uy * uy);
+  feq[0] = d2q9::w[0] * rho * even;
+  for (int i = 1; i <= 4; ++i) {
+    const double eu = d2q9::ex[i] * ux + d2q9::ey[i] * uy;
+    const double wr = d2q9::w[i] * rho, e = even + 4.5 * eu * eu, o = 3.0 * eu;
+    feq[i] = wr * (e + o);
+    feq[i + 4] = wr * (e - o);
+  }
+}
+
 // Velocity that enters the equilibrium, from density and the raw first moment.
 template <ForceScheme S>
 inline void velocityFromMoments(double rho, double jx, double jy, const CollisionParams& p,

@@ -1,0 +1,248 @@
+// Coupled-step benchmark (issue: coupling): a 1024^2 lattice with moving discs
+// covering about 10% of its cells, the step split into its passes, against the
+// fluid-only roofline of the same run; what the Manager costs over the bare
+// kernels; and the solid-ratio knob: cost per covered cell and the Couette
+// error of each setting.
+//
+//   sandflow_coupled_bench ?--steps N? ?--threads T? ?--quick?
+//
+// Prints plain tables (scripts/bench collects them). Lattice units (h = dt = 1).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <numbers>
+#include <random>
+#include <string>
+
+#include "sandflow/sim/manager.hpp"
+#include "stream_copy.hpp"
+
+namespace {
+
+using namespace sf;
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+lb::LatticeDef channel(int n) {
+  lb::LatticeDef def;
+  def.size = Vec2(n, n);
+  def.cells = n;
+  def.tau = 0.8;
+  def.timestep = 1.0;
+  def.forcing = Vec2(1e-7, 0);
+  return def;  // periodic in x, no-slip bottom and top
+}
+
+int softMaterial(sim::Manager& m) {
+  dem::Material mat{"soft"};
+  mat.density = 3.0;
+  mat.kn = mat.ks = 1e-4;
+  mat.friction = 0;
+  return m.assembly().materials().add(mat);
+}
+
+// Discs of radius 8 on a jittered grid with random velocities, covering
+// `fraction` of the lattice; returns how many.
+int addDiscs(sim::Manager& m, int n, double fraction, unsigned seed) {
+  const int mat = softMaterial(m);
+  const double r = 8.0, area = std::numbers::pi * r * r;
+  const int count = int(fraction * n * n / area);
+  const int perRow = int(std::ceil(std::sqrt(double(count))));
+  const double pitch = double(n) / perRow;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int made = 0;
+  for (int k = 0; k < count; ++k) {
+    dem::ElementDef d;
+    d.shape = std::make_unique<dem::Disc>(r);
+    d.material = mat;
+    d.x = Vec2((k % perRow + 0.5) * pitch + 0.1 * pitch * u(rng),
+               (k / perRow + 0.5) * pitch + 0.1 * pitch * u(rng));
+    if (d.x.y() < r + 2 || d.x.y() > n - r - 2) continue;
+    d.v = 0.01 * Vec2(u(rng), u(rng));
+    d.w = 0.001 * u(rng);
+    m.assembly().add(std::move(d));
+    ++made;
+  }
+  return made;
+}
+
+struct Split {
+  double total = 0, bulk = 0, covered = 0, fill = 0, coverage = 0, forces = 0, dem = 0;
+  double mlups = 0;
+  std::size_t cells = 0;
+};
+
+Split timeSteps(sim::Manager& m, int steps) {
+  for (int k = 0; k < 3; ++k) m.step();  // warm up
+  const lb::Lattice::Times l0 = m.lattice().times();
+  const coupling::CouplingTimes c0 = m.coupler().times();
+  const sim::Manager::Times m0 = m.times();
+  const auto t0 = Clock::now();
+  for (int k = 0; k < steps; ++k) m.step();
+  Split s;
+  s.total = seconds(t0) / steps;
+  const lb::Lattice::Times& l = m.lattice().times();
+  s.bulk = (l.bulk - l0.bulk) / steps;
+  s.covered = (l.covered - l0.covered) / steps;
+  s.fill = (l.fill - l0.fill) / steps;
+  s.coverage = (m.coupler().times().coverage - c0.coverage) / steps;
+  s.forces = (m.coupler().times().forces - c0.forces) / steps;
+  s.dem = (m.times().elements - m0.elements) / steps;
+  s.mlups = double(m.lattice().nodes()) / s.total / 1e6;
+  s.cells = m.coupler().coveredCells();
+  return s;
+}
+
+// Cylindrical Couette (thesis case B) at 80 cells across, one solid-ratio
+// setting: relative L2 velocity error and torque error.
+std::pair<double, double> couette(int subcells) {
+  const double r1 = 0.1, r2 = 0.3, om = 0.1, nu = 4.166e-2;
+  sim::Manager m;
+  coupling::Settings s;
+  s.subcells = subcells;
+  m.setCoupling(s);
+  lb::LatticeDef def;
+  def.size = Vec2(1, 1);
+  def.cells = 80;
+  def.viscosity = nu;
+  for (auto& side : def.sides) side = lb::SideDef{lb::SideKind::periodic};
+  m.createLattice(def);
+  lb::Lattice& l = m.lattice();
+  const int inner = l.addCircle({-1, Vec2(0.5, 0.5), r1, false, Vec2::Zero(), 0});
+  l.addCircle({-1, Vec2(0.5, 0.5), r2, true, Vec2::Zero(), om});
+  const long steps = std::lround(2.5 / l.params().dt);
+  for (long k = 0; k < steps; ++k) m.step();
+  const double A = om * r2 * r2 / (r2 * r2 - r1 * r1),
+               B = -om * r1 * r1 * r2 * r2 / (r2 * r2 - r1 * r1);
+  double err = 0, norm = 0;
+  for (int j = 0; j < l.ny(); ++j)
+    for (int i = 0; i < l.nx(); ++i) {
+      const Vec2 d = l.position(i, j) - Vec2(0.5, 0.5);
+      const double r = d.norm();
+      if (l.solidRatio(i, j) > 0 || r <= r1 || r >= r2) continue;
+      const Vec2 exact = (A * r + B / r) * Vec2(-d.y(), d.x()) / r;
+      err += (l.velocity(i, j) - exact).squaredNorm();
+      norm += exact.squaredNorm();
+    }
+  const double T = 4 * std::numbers::pi * nu * om * r1 * r1 * r2 * r2 / (r2 * r2 - r1 * r1);
+  return {std::sqrt(err / norm), std::abs(l.obstacleInfo(inner).torque - T) / T};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int steps = 40, threads = 2;
+  bool quick = false;
+  for (int k = 1; k < argc; ++k) {
+    if (!std::strcmp(argv[k], "--steps") && k + 1 < argc)
+      steps = std::atoi(argv[++k]);
+    else if (!std::strcmp(argv[k], "--threads") && k + 1 < argc)
+      threads = std::atoi(argv[++k]);
+    else if (!std::strcmp(argv[k], "--quick"))
+      quick = true;
+    else {
+      std::fprintf(stderr, "usage: %s ?--steps N? ?--threads T? ?--quick?\n", argv[0]);
+      return 2;
+    }
+  }
+  const int n = 1024;
+  bench::measureBandwidth(512, 6, {threads});
+  const double roof = bench::bandwidth[threads].copy * 1000 / 144.0;
+  std::printf("copy bandwidth %.2f GB/s with %d threads -> fluid roofline %.1f MLUPS\n\n",
+              bench::bandwidth[threads].copy, threads, roof);
+
+  // 1. Fluid only: the bare lattice and the same through the Manager.
+  double bare = 0, managed = 0;
+  {
+    lb::Lattice lattice(lb::resolve(channel(n)));
+    lattice.setThreads(threads);
+    for (int k = 0; k < 3; ++k) lattice.step();
+    auto t0 = Clock::now();
+    for (int k = 0; k < steps; ++k) lattice.step();
+    bare = seconds(t0) / steps;
+    sim::Manager m;
+    m.setThreads(threads);
+    m.createLattice(channel(n));
+    managed = timeSteps(m, steps).total;
+  }
+  std::printf(
+      "fluid only, %dx%d, %d threads: bare lattice %.2f ms/step (%.1f MLUPS, %.1f%% of "
+      "roofline), through the Manager %.2f ms/step (%+.2f%%)\n",
+      n, n, threads, bare * 1e3, n * n / bare / 1e6, n * n / bare / 1e6 / roof * 100, managed * 1e3,
+      (managed / bare - 1) * 100);
+
+  // 2. Elements only: the bare assembly and the same through the Manager.
+  {
+    auto build = [](dem::Assembly& a) {
+      std::mt19937 rng(3);
+      std::uniform_real_distribution<double> u(-1, 1);
+      for (int k = 0; k < 10000; ++k) {
+        dem::ElementDef d;
+        d.shape = std::make_unique<dem::Disc>(0.5e-3 + 0.25e-3 * (1 + u(rng)));
+        d.x = Vec2((k % 100) * 2.1e-3, (k / 100) * 2.1e-3);
+        d.v = 0.05 * Vec2(u(rng), u(rng));
+        a.add(std::move(d));
+      }
+    };
+    sim::Manager m;
+    m.setThreads(threads);
+    build(m.assembly());
+    dem::Assembly a;
+    a.threads = threads;
+    build(a);
+    const double dt = m.timestep();
+    const int demSteps = quick ? 200 : 1000;
+    auto t0 = Clock::now();
+    for (int k = 0; k < demSteps; ++k) a.step(dt, Vec2::Zero());
+    const double tb = seconds(t0);
+    t0 = Clock::now();
+    for (int k = 0; k < demSteps; ++k) m.step();
+    const double tm = seconds(t0);
+    std::printf(
+        "elements only, 10000 discs, %d steps: bare assembly %.3f s, through the Manager "
+        "%.3f s (%+.2f%%)\n\n",
+        demSteps, tb, tm, (tm / tb - 1) * 100);
+  }
+
+  // 3. The coupled scene, and 4. each solid-ratio setting on it.
+  std::printf("coupled: %dx%d lattice, discs of radius 8 cells covering ~10%%, moving; ms/step\n",
+              n, n);
+  std::printf("%-10s %6s %8s %8s %8s %8s %8s %8s %8s %8s %7s %8s %8s\n", "solidratio", "discs",
+              "cells", "total", "bulk", "covered", "fill", "ratio", "forces", "DEM", "MLUPS",
+              "% roof", "ns/cell");
+  const int settings[] = {coupling::kExact, 1, 2, 4, 8};
+  const char* names[] = {"exact", "1", "2", "4", "8"};
+  for (int k = 0; k < 5; ++k) {
+    if (quick && k > 0 && k < 4) continue;
+    sim::Manager m;
+    m.setThreads(threads);
+    m.createLattice(channel(n));
+    coupling::Settings s;
+    s.subcells = settings[k];
+    m.setCoupling(s);
+    const int discs = addDiscs(m, n, 0.10, 11);
+    const Split t = timeSteps(m, steps);
+    std::printf("%-10s %6d %8zu %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f %7.1f %7.1f%% %8.1f\n",
+                names[k], discs, t.cells, t.total * 1e3, t.bulk * 1e3, t.covered * 1e3,
+                t.fill * 1e3, t.coverage * 1e3, t.forces * 1e3, t.dem * 1e3, t.mlups,
+                t.mlups / roof * 100, t.coverage / double(t.cells) * 1e9);
+  }
+  std::printf(
+      "\n(ns/cell: the solid-ratio pass per covered cell, every disc measured again "
+      "each step)\n\n");
+
+  std::printf("Couette (case B, 80 cells across, steady): error of each solid-ratio setting\n");
+  std::printf("%-10s %12s %12s\n", "solidratio", "velocity L2", "torque");
+  for (int k = 0; k < 5; ++k) {
+    if (quick && k > 0 && k < 4) continue;
+    const auto [ev, et] = couette(settings[k]);
+    std::printf("%-10s %12.3e %12.3e\n", names[k], ev, et);
+  }
+  return 0;
+}
