@@ -31,7 +31,11 @@ set h [expr {$L / ${-cells}}]
 lattice create -size [list $L $H] -cells ${-cells} -viscosity ${-nu} -tau 0.8 \
     -walls {left noslip right noslip bottom noslip top noslip}
 sim configure -gravity [list 0 [expr {-${-g}}]] -integrator ${-integrator} -coupling ${-coupling}
-material create grain -density ${-ratio} -kn 1e4 -ks 1e4 -friction 0.1
+# Contacts (only if it reaches a wall) stiff enough, and soft enough that the
+# critical step is five fluid steps.
+set dt [dict get [lattice info] timestep]
+set k [expr {${-ratio} * acos(-1) * 0.25 * $d * $d * 4 / (25 * $dt * $dt)}]
+material create grain -density ${-ratio} -kn $k -ks $k -friction 0.1
 # Walls for contacts, on the lattice's no-slip sides.
 foreach {from to} [list {0 0} [list 0 $H] [list $L 0] [list $L $H] {0 0} [list $L 0]] {
     wall create -from $from -to $to -material grain
