@@ -4,14 +4,15 @@
 # Consistent units with d = 1 and fluid density 1. Prints the positions, the
 # centre distance and the stage; with -csv writes the history.
 #
-#   sandflow examples/dkt.tcl ?-cells N? ?-nu nu? ?-g g? ?-time T? ?-every K?
+#   sandflow examples/dkt.tcl ?-cells N? ?-nu nu? ?-g g? ?-height H? ?-time T? ?-every K?
 #            ?-coupling explicit|implicit? ?-csv FILE?
 #
 # -cells: lattice cells across the channel (the thesis: 120, the discs then 15
-# cells across); -time: how long to run, in units of d / (mean settling speed)
-# estimated from the first disc's speed.
+# cells across); -height: the channel's height in d (the thesis: 100); -time:
+# how long to run, in units of d / (mean settling speed) estimated from the
+# leading disc's speed.
 
-set options [dict create -cells 120 -nu 0.02 -g 0.04 -height 60 -time 60 -every 200 \
+set options [dict create -cells 120 -nu 0.02 -g 0.04 -height 100 -time 100 -every 200 \
                  -coupling explicit -csv {}]
 if {[llength $argv] % 2} { error "usage: dkt.tcl ?-option value ...?" }
 foreach {key value} $argv {
