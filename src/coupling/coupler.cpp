@@ -72,7 +72,9 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     }
     const dem::Shape& shape = *b.shape[s];
     if (!stale(c, b.id[s], b.x[s], b.angle[s], shape.area(), b.reach[s], 0, false)) continue;
-    c = Cached{b.id[s], b.x[s], b.angle[s], shape.area(), b.reach[s], 0, false, {}};
+    std::vector<CellCover> cells = std::move(c.cells);  // keep its capacity
+    cells.clear();
+    c = Cached{b.id[s], b.x[s], b.angle[s], shape.area(), b.reach[s], 0, false, std::move(cells)};
     if (const auto f = footprintOf(shape, b.x[s], b.angle[s]))
       cover(*f, b.x[s], grid, settings.subcells, c.cells);
   }

@@ -42,7 +42,8 @@ void cover(const Footprint& f, const Vec2& reference, const Grid& g, int subcell
   if (i0 > i1 || j0 > j1) return;
   const int w = i1 - i0 + 1, hgt = j1 - j0 + 1;
   // Coverage on the visited block, with a ring of zeros for the interior test.
-  std::vector<double> eps(std::size_t(w + 2) * (hgt + 2), 0.0);
+  thread_local std::vector<double> eps;  // scratch, reused: no allocation per element
+  eps.assign(std::size_t(w + 2) * (hgt + 2), 0.0);
   auto at = [&](int a, int b) -> double& { return eps[std::size_t(b + 1) * (w + 2) + (a + 1)]; };
   // Where a cell's centre is seen from the reference point: a container, which
   // spans the lattice, is seen at the nearest periodic image.

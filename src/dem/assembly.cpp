@@ -275,7 +275,8 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
   std::vector<char>& excessive = scratchFlag_;
   newShear.resize(nc);
   excessive.assign(nc, 0);
-#pragma omp parallel for schedule(static) num_threads(threads)
+// Few contacts stay on one thread: a parallel region would cost more.
+#pragma omp parallel for schedule(static) num_threads(threads) if (nc >= 512)
   for (std::ptrdiff_t k = 0; k < nc; ++k) {
     Contact& c = contacts_[k];
     const int i = c.a, j = c.b;
@@ -381,7 +382,7 @@ void Assembly::checkSpeeds(double dt) const {
 void Assembly::integrate(double dt) {
   Bodies& b = bodies_;
   const int n = b.size();
-#pragma omp parallel for schedule(static) num_threads(threads)
+#pragma omp parallel for schedule(static) num_threads(threads) if (n >= 2048)
   for (int s = 0; s < n; ++s) {
     const std::uint8_t h = b.hold[s];
     Vec2 a = b.force[s] / b.mass[s];

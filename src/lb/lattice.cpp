@@ -174,10 +174,6 @@ bool Lattice::holdsFluid(std::int64_t x) const {
   return k == NodeKind::fluid || k == NodeKind::velocity || k == NodeKind::pressure;
 }
 
-NodeKind Lattice::kind(int i, int j) const {
-  return kind_[index(i, j)];
-}
-
 double Lattice::density(int i, int j) const {
   const std::int64_t x = index(i, j);
   if (!holdsFluid(x)) return p_.def.density;

@@ -105,7 +105,7 @@ class Lattice {
   Vec2 solidVelocity(int i, int j) const;
 
   // Fields of interior node (i, j), 0 <= i < nx, 0 <= j < ny, physical units.
-  NodeKind kind(int i, int j) const;
+  NodeKind kind(int i, int j) const { return kind_[index(i, j)]; }
   double density(int i, int j) const;
   Vec2 velocity(int i, int j) const;
   double pressure(int i, int j) const;
