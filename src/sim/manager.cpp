@@ -10,7 +10,8 @@
 
 namespace sf::sim {
 
-Manager::Manager() : threads_(std::max(1, omp_get_num_procs())) {
+// The default thread count honours OMP_NUM_THREADS (else the machine's cores).
+Manager::Manager() : threads_(std::max(1, omp_get_max_threads())) {
   assembly_.threads = threads_;
 }
 
