@@ -30,7 +30,14 @@ void writeLatticeVti(const lb::Lattice& lattice, std::ostream& out) {
   const int nx = lattice.nx(), ny = lattice.ny();
   const std::size_t n = lattice.nodes();
   Array density{"density", "Float64", 1, {}}, pressure{"pressure", "Float64", 1, {}},
-      velocity{"velocity", "Float64", 3, {}}, kind{"kind", "UInt8", 1, {}};
+      velocity{"velocity", "Float64", 3, {}}, kind{"kind", "UInt8", 1, {}},
+      solid{"solid", "Float64", 1, {}};
+  // The solid ratio moving solids gave each node in the last step.
+  std::vector<double> eps(n, 0.0);
+  for (const lb::CoveredCell& c : lattice.coveredCells()) {
+    const int ci = int(c.node % (nx + 2)) - 1, cj = int(c.node / (nx + 2)) - 1;
+    eps[std::size_t(cj) * nx + ci] = c.eps;
+  }
   density.bytes.reserve(n * 8);
   pressure.bytes.reserve(n * 8);
   velocity.bytes.reserve(n * 24);
@@ -44,8 +51,9 @@ void writeLatticeVti(const lb::Lattice& lattice, std::ostream& out) {
       append(velocity.bytes, u.y());
       append(velocity.bytes, 0.0);
       append(kind.bytes, static_cast<std::uint8_t>(lattice.kind(i, j)));
+      append(solid.bytes, eps[std::size_t(j) * nx + i]);
     }
-  const Array* arrays[] = {&density, &pressure, &velocity, &kind};
+  const Array* arrays[] = {&density, &pressure, &velocity, &kind, &solid};
 
   const auto& p = lattice.params();
   const Vec2 first = lattice.position(0, 0);
