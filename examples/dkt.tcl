@@ -12,7 +12,7 @@
 # how long to run, in units of d / (mean settling speed) estimated from the
 # leading disc's speed.
 
-set options [dict create -cells 120 -nu 0.02 -g 0.04 -height 100 -time 100 -every 200 \
+set options [dict create -cells 120 -nu 0.02 -g 0.08 -height 100 -time 100 -every 200 \
                  -coupling explicit -csv {}]
 if {[llength $argv] % 2} { error "usage: dkt.tcl ?-option value ...?" }
 foreach {key value} $argv {
