@@ -137,6 +137,7 @@ std::pair<double, double> couette(int subcells) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // a line at a time, also into a file
   int steps = 40, threads = 2;
   bool quick = false;
   for (int k = 1; k < argc; ++k) {

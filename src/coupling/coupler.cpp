@@ -89,7 +89,8 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
 
   // 2. Cells: coverage summed over the solids on each (capped at 1), solid
   //    velocity weighted by coverage, interior only when one solid holds it.
-  std::vector<lb::CoveredCell> cells;
+  std::vector<lb::CoveredCell>& cells = cellsBuffer_;  // reused: no fresh pages per step
+  cells.clear();
   pieces_.clear();
   epsSum_.clear();
   owners_.clear();
@@ -114,10 +115,31 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     for (const CellCover& cc : elements_[s].cells) add(s, cc);
   for (std::size_t k = 0; k < circles.size(); ++k)
     for (const CellCover& cc : circles_[k].cells) add(-1 - int(k), cc);
-  for (std::size_t k = 0; k < cells.size(); ++k) {
-    cellOf_[cells[k].node] = -1;
-    cells[k].eps = std::min(1.0, epsSum_[k]);
+  // Renumber the cells in node order, so that the covered pass walks the
+  // population arrays forwards rather than element by element.
+  {
+    std::vector<lb::CoveredCell>& sorted = sortedBuffer_;
+    std::vector<double>& eps = epsBuffer_;
+    std::vector<std::int32_t>& owners = ownersBuffer_;
+    std::vector<std::int32_t>& renumber = renumberBuffer_;
+    sorted.clear(), eps.clear(), owners.clear();
+    renumber.resize(cells.size());
+    const std::int32_t count = std::int32_t(cellOf_.size());
+    for (std::int32_t node = 0; node < count; ++node) {
+      std::int32_t& k = cellOf_[node];
+      if (k < 0) continue;
+      renumber[k] = std::int32_t(sorted.size());
+      sorted.push_back(cells[k]);
+      eps.push_back(epsSum_[k]);
+      owners.push_back(owners_[k]);
+      k = -1;
+    }
+    for (Piece& p : pieces_) p.cell = renumber[p.cell];
+    cells.swap(sorted);
+    epsSum_.swap(eps);
+    owners_.swap(owners);
   }
+  for (std::size_t k = 0; k < cells.size(); ++k) cells[k].eps = std::min(1.0, epsSum_[k]);
   // Rigid velocities (vx, vy, w) of the owners: elements as they are, or
   // solved with the exchange they will cause; circles as prescribed.
   velocity_.resize(n);
@@ -137,7 +159,7 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     }
   }
   cells_ = cells.size();
-  lattice.setCoveredCells(std::move(cells), settings.equilibriumInterior);
+  lattice.swapCoveredCells(cells, settings.equilibriumInterior);  // ours now holds the old list
   times_.coverage += since(t0);
 }
 

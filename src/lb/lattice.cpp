@@ -369,7 +369,11 @@ void Lattice::advanceCircles(double dt) {
 }
 
 void Lattice::setCoveredCells(std::vector<CoveredCell> cells, bool equilibriumInterior) {
-  covered_.cells = std::move(cells);
+  swapCoveredCells(cells, equilibriumInterior);
+}
+
+void Lattice::swapCoveredCells(std::vector<CoveredCell>& cells, bool equilibriumInterior) {
+  covered_.cells.swap(cells);
   covered_.equilibriumInterior = equilibriumInterior;
   covered_.exchange.assign(covered_.cells.size(), Vec2::Zero());
 }

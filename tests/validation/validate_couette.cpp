@@ -75,6 +75,7 @@ void transient(FILE* csv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // a line at a time, also into a file
   bool quick = false;
   std::string dir;
   for (int k = 1; k < argc; ++k) {

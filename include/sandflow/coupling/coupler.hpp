@@ -87,6 +87,10 @@ class Coupler {
   std::vector<double> epsSum_;        // per covered cell
   std::vector<std::int32_t> owners_;  // per covered cell
   std::vector<Vec3> velocity_;        // per element: (vx, vy, w) the fluid sees
+  // Buffers kept from step to step (a fresh one would fault in its pages).
+  std::vector<lb::CoveredCell> cellsBuffer_, sortedBuffer_;
+  std::vector<double> epsBuffer_;
+  std::vector<std::int32_t> ownersBuffer_, renumberBuffer_;
   std::uint64_t topology_ = 0;
   Settings measuredWith_;
   std::size_t cells_ = 0;

@@ -90,6 +90,8 @@ class Lattice {
   // Cells covered by moving solids for the next step (bulk-fluid nodes only;
   // see CoveredNode), and the momentum each exchanged in the last step.
   void setCoveredCells(std::vector<CoveredCell> cells, bool equilibriumInterior);
+  // The same, handing the previous list back in `cells` for reuse.
+  void swapCoveredCells(std::vector<CoveredCell>& cells, bool equilibriumInterior);
   const std::vector<CoveredCell>& coveredCells() const { return covered_.cells; }
   // Density and first moment (lattice units) of the populations that the
   // given cells will pull in the next step, before any collision.
