@@ -64,7 +64,8 @@ proc report {} {
     if {$csv ne {}} { puts $csv [join [list $t [expr {$x / $L}] $y $vx $vy $re] ,] }
     return $y
 }
-set stop [expr {$y0 - ${-fall} * $d}]
+# Stop after the fall, or a diameter above the floor, whichever comes first.
+set stop [expr {max($y0 - ${-fall} * $d, 1.5 * $d)}]
 while {[report] > $stop} {
     run ${-every}
 }
