@@ -50,6 +50,7 @@ bool Coupler::stale(const Cached& c, int id, const Vec2& x, double angle, double
 void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const Settings& settings,
                       const Vec2& gravity, int threads) {
   const auto t0 = Clock::now();
+  threads_ = threads;
   const Grid grid = gridOf(lattice);
   const dem::Bodies& b = assembly.bodies();
   const int n = b.size();
@@ -62,7 +63,14 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   elements_.resize(n);
   circles_.resize(circles.size());
 
-  // 1. Coverage of whatever moved (or changed shape) since it was measured.
+  // 1. Coverage of whatever moved (or changed shape) since it was measured,
+  //    kept to the cells that hold bulk fluid.
+  auto measure = [&](Cached& c, const Footprint& f, const Vec2& reference) {
+    cover(f, reference, grid, settings.subcells, c.cells);
+    std::erase_if(c.cells, [&](const CellCover& cc) {
+      return lattice.kind(cc.i, cc.j) != lb::NodeKind::fluid;
+    });
+  };
 #pragma omp parallel for schedule(dynamic, 4) num_threads(threads) if (n >= 16)
   for (int s = 0; s < n; ++s) {
     Cached& c = elements_[s];
@@ -72,92 +80,78 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     }
     const dem::Shape& shape = *b.shape[s];
     if (!stale(c, b.id[s], b.x[s], b.angle[s], shape.area(), b.reach[s], 0, false)) continue;
-    std::vector<CellCover> cells = std::move(c.cells);  // keep its capacity
-    cells.clear();
-    c = Cached{b.id[s], b.x[s], b.angle[s], shape.area(), b.reach[s], 0, false, std::move(cells)};
-    if (const auto f = footprintOf(shape, b.x[s], b.angle[s]))
-      cover(*f, b.x[s], grid, settings.subcells, c.cells);
+    std::vector<CellCover> kept = std::move(c.cells);  // keep its capacity
+    kept.clear();
+    c = Cached{b.id[s], b.x[s], b.angle[s], shape.area(), b.reach[s], 0, false, std::move(kept)};
+    if (const auto f = footprintOf(shape, b.x[s], b.angle[s])) measure(c, *f, b.x[s]);
   }
   for (std::size_t k = 0; k < circles.size(); ++k) {
     const lb::CircleObstacle& o = circles[k];
     Cached& c = circles_[k];
     if (!stale(c, o.id, o.centre, 0, 0, 0, o.radius, o.outside)) continue;
     c = Cached{o.id, o.centre, 0, 0, 0, o.radius, o.outside, {}};
-    cover(*circleFootprint(o.centre, o.radius, o.outside), o.centre, grid, settings.subcells,
-          c.cells);
+    measure(c, *circleFootprint(o.centre, o.radius, o.outside), o.centre);
   }
 
-  // 2. Cells: coverage summed over the solids on each (capped at 1), solid
-  //    velocity weighted by coverage, interior only when one solid holds it.
+  // 2. One piece per solid per cell, solid by solid (the order the force sums
+  //    keep), then the pieces in node order and each node's pieces made a cell.
+  const int owners = n + int(circles.size());
+  auto coverOf = [&](int owner) -> const std::vector<CellCover>& {
+    return owner < n ? elements_[owner].cells : circles_[owner - n].cells;
+  };
+  pieceStart_.assign(owners + 1, 0);
+  for (int o = 0; o < owners; ++o) pieceStart_[o + 1] = pieceStart_[o] + coverOf(o).size();
+  pieces_.resize(pieceStart_[owners]);
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads) if (owners >= 64)
+  for (int o = 0; o < owners; ++o) {
+    const std::vector<CellCover>& from = coverOf(o);
+    Piece* to = pieces_.data() + pieceStart_[o];
+    const int owner = o < n ? o : -1 - (o - n);
+    for (const CellCover& cc : from)
+      *to++ = {lattice.nodeIndex(cc.i, cc.j), 0, owner, cc.eps, cc.arm, cc.interior};
+  }
+  sortByNode();
   std::vector<lb::CoveredCell>& cells = cellsBuffer_;  // reused: no fresh pages per step
   cells.clear();
-  pieces_.clear();
   epsSum_.clear();
   owners_.clear();
-  cellOf_.resize(std::size_t(lattice.nx() + 2) * (lattice.ny() + 2), -1);
-  auto add = [&](int owner, const CellCover& cc) {
-    if (lattice.kind(cc.i, cc.j) != lb::NodeKind::fluid) return;
-    const std::int64_t node = lattice.nodeIndex(cc.i, cc.j);
-    std::int32_t& k = cellOf_[node];
-    if (k < 0) {
-      k = std::int32_t(cells.size());
-      cells.push_back({node, 0.0, 0.0, 0.0, cc.interior});
-      epsSum_.push_back(0.0);
-      owners_.push_back(0);
-    } else {
-      cells[k].interior = false;
+  cellStart_.clear();
+  for (std::size_t k = 0; k < order_.size();) {
+    const std::uint32_t node = keys_[k];
+    const std::size_t first = k;
+    double sum = 0;
+    const auto cell = std::int32_t(cells.size());
+    for (; k < order_.size() && keys_[k] == node; ++k) {
+      Piece& p = pieces_[order_[k]];
+      p.cell = cell;
+      sum += p.eps;
     }
-    epsSum_[k] += cc.eps;
-    ++owners_[k];
-    pieces_.push_back({k, owner, cc.eps, cc.arm});
-  };
-  for (int s = 0; s < n; ++s)
-    for (const CellCover& cc : elements_[s].cells) add(s, cc);
-  for (std::size_t k = 0; k < circles.size(); ++k)
-    for (const CellCover& cc : circles_[k].cells) add(-1 - int(k), cc);
-  // Renumber the cells in node order, so that the covered pass walks the
-  // population arrays forwards rather than element by element.
-  {
-    std::vector<lb::CoveredCell>& sorted = sortedBuffer_;
-    std::vector<double>& eps = epsBuffer_;
-    std::vector<std::int32_t>& owners = ownersBuffer_;
-    std::vector<std::int32_t>& renumber = renumberBuffer_;
-    sorted.clear(), eps.clear(), owners.clear();
-    renumber.resize(cells.size());
-    const std::int32_t count = std::int32_t(cellOf_.size());
-    for (std::int32_t node = 0; node < count; ++node) {
-      std::int32_t& k = cellOf_[node];
-      if (k < 0) continue;
-      renumber[k] = std::int32_t(sorted.size());
-      sorted.push_back(cells[k]);
-      eps.push_back(epsSum_[k]);
-      owners.push_back(owners_[k]);
-      k = -1;
-    }
-    for (Piece& p : pieces_) p.cell = renumber[p.cell];
-    cells.swap(sorted);
-    epsSum_.swap(eps);
-    owners_.swap(owners);
+    const bool interior = k - first == 1 && pieces_[order_[first]].interior;
+    cells.push_back({node, std::min(1.0, sum), 0.0, 0.0, interior});
+    epsSum_.push_back(sum);
+    owners_.push_back(std::int32_t(k - first));
+    cellStart_.push_back(std::int32_t(first));
   }
-  for (std::size_t k = 0; k < cells.size(); ++k) cells[k].eps = std::min(1.0, epsSum_[k]);
+  cellStart_.push_back(std::int32_t(order_.size()));
   // Rigid velocities (vx, vy, w) of the owners: elements as they are, or
   // solved with the exchange they will cause; circles as prescribed.
   velocity_.resize(n);
   for (int s = 0; s < n; ++s) velocity_[s] = Vec3(b.v[s].x(), b.v[s].y(), b.w[s]);
   if (settings.implicit) solveVelocities(lattice, assembly, settings, cells, gravity);
   blendVelocities(lattice, circles, cells);
-  fastest_ = SolidSpeed{};
   // The fastest surface that the fluid sees (interior cells move no fluid).
-  for (const Piece& p : pieces_) {
-    const lb::CoveredCell& cell = cells[p.cell];
-    if (cell.interior) continue;
-    const double mach = std::hypot(cell.ux, cell.uy);
-    if (mach > fastest_.mach) {
-      fastest_.mach = mach;
-      fastest_.element = p.owner >= 0 ? b.id[p.owner] : -1;
-      fastest_.obstacle = p.owner < 0 ? circles[-1 - p.owner].id : -1;
-    }
+  fastest_ = SolidSpeed{};
+  double fastest2 = 0;
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const lb::CoveredCell& cell = cells[c];
+    const double u2 = cell.ux * cell.ux + cell.uy * cell.uy;
+    if (cell.interior || !(u2 > fastest2)) continue;
+    fastest2 = u2;
+    const int owner = pieces_[order_[cellStart_[c]]].owner;
+    fastest_.element = owner >= 0 ? b.id[owner] : -1;
+    fastest_.obstacle = owner < 0 ? circles[-1 - owner].id : -1;
   }
+  fastest_.mach = std::sqrt(fastest2);
   cells_ = cells.size();
   lattice.swapCoveredCells(cells, settings.equilibriumInterior);  // ours now holds the old list
   times_.coverage += since(t0);
@@ -169,15 +163,54 @@ void Coupler::blendVelocities(const lb::Lattice& lattice,
                               const std::vector<lb::CircleObstacle>& circles,
                               std::vector<lb::CoveredCell>& cells) const {
   const double toLattice = lattice.params().dt / lattice.params().h;
-  for (lb::CoveredCell& cell : cells) cell.ux = cell.uy = 0;
-  for (const Piece& p : pieces_) {
-    const Vec2 v = p.owner >= 0
-                       ? Vec2(velocity_[p.owner].x(), velocity_[p.owner].y()) +
-                             spin(velocity_[p.owner].z(), p.arm)
-                       : circles[-1 - p.owner].velocity + spin(circles[-1 - p.owner].spin, p.arm);
-    const double weight = p.eps / epsSum_[p.cell] * toLattice;
-    cells[p.cell].ux += weight * v.x();
-    cells[p.cell].uy += weight * v.y();
+  const std::ptrdiff_t count = std::ptrdiff_t(cells.size());
+  // Cell by cell over its pieces in a fixed order: any thread count, same sums.
+#pragma omp parallel for schedule(static) num_threads(threads_) if (count >= 16384)
+  for (std::ptrdiff_t c = 0; c < count; ++c) {
+    double ux = 0, uy = 0;
+    for (std::int32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
+      const Piece& p = pieces_[order_[k]];
+      const Vec2 v = p.owner >= 0
+                         ? Vec2(velocity_[p.owner].x(), velocity_[p.owner].y()) +
+                               spin(velocity_[p.owner].z(), p.arm)
+                         : circles[-1 - p.owner].velocity + spin(circles[-1 - p.owner].spin, p.arm);
+      const double weight = p.eps / epsSum_[c] * toLattice;
+      ux += weight * v.x();
+      uy += weight * v.y();
+    }
+    cells[c].ux = ux;
+    cells[c].uy = uy;
+  }
+}
+
+// Stable LSD radix sort of the pieces by node, 11 bits a pass, on compact
+// (node, piece) pairs: order_ lists the pieces by node, and for one node in
+// piece order. Nodes fit 32 bits (the lattice's size limit is far below).
+void Coupler::sortByNode() {
+  constexpr int kBits = 11, kBuckets = 1 << kBits;
+  const std::size_t count = pieces_.size();
+  keys_.resize(count), keysScratch_.resize(count);
+  order_.resize(count), orderScratch_.resize(count);
+  std::uint32_t top = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    keys_[k] = std::uint32_t(pieces_[k].node);
+    order_[k] = std::int32_t(k);
+    top = std::max(top, keys_[k]);
+  }
+  std::vector<std::int32_t>& start = bucketStart_;
+  start.resize(kBuckets + 1);
+  for (int shift = 0; shift == 0 || (top >> shift) > 0; shift += kBits) {
+    std::fill(start.begin(), start.end(), 0);
+    for (std::uint32_t key : keys_) ++start[((key >> shift) & (kBuckets - 1)) + 1];
+    for (int d = 0; d < kBuckets; ++d) start[d + 1] += start[d];
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::int32_t to = start[(keys_[k] >> shift) & (kBuckets - 1)]++;
+      keysScratch_[to] = keys_[k];
+      orderScratch_[to] = order_[k];
+    }
+    keys_.swap(keysScratch_);
+    order_.swap(orderScratch_);
+    if (shift + kBits >= 32) break;
   }
 }
 
@@ -313,7 +346,8 @@ void Coupler::clear(dem::Assembly& assembly) {
   elements_.clear();
   circles_.clear();
   pieces_.clear();
-  cellOf_.clear();
+  order_.clear();
+  cellStart_.clear();
   epsSum_.clear();
   owners_.clear();
   cells_ = 0;

@@ -31,26 +31,41 @@ StepStats runBlock(const StepContext& ctx, const CoveredNode& node, std::ptrdiff
     for (int i = 0; i < Q; ++i) rho += f[i], jx += ex[i] * f[i], jy += ey[i] * f[i];
     double solid[Q], out[Q];
     equilibria(rho, cell.ux, cell.uy, solid);
+    // Momentum given to the fluid: sum_i e_i Omega^s_i = rho u_s - j exactly.
+    const Vec2 given(rho * cell.ux - jx, rho * cell.uy - jy);
     Vec2 gave;
     double u2;
     if (cell.interior && node.equilibriumInterior) {
       for (int i = 0; i < Q; ++i) out[i] = solid[i] + source[i];
-      gave = Vec2(rho * cell.ux - jx, rho * cell.uy - jy);
+      gave = given;
       u2 = (jx * jx + jy * jy) / (rho * rho);
     } else {
-      double fc[Q], fluid[Q];
-      for (int i = 0; i < Q; ++i) fc[i] = f[i];
-      collide<C, S>(fc, p, u2);
-      equilibria(rho, jx / rho, jy / rho, fluid);
+      double fluid[Q];
+      const double ux = jx / rho, uy = jy / rho;
+      u2 = ux * ux + uy * uy;
+      equilibria(rho, ux, uy, fluid);
       const double b = cell.eps * (tau - 0.5) / ((1.0 - cell.eps) + (tau - 0.5));
-      double gx = 0, gy = 0;
-      for (int i = 0; i < Q; ++i) {
-        const int o = opposite[i];
-        const double omega = f[o] - f[i] + solid[i] - fluid[o];
-        out[i] = f[i] + (1.0 - b) * (fc[i] - f[i]) + b * (omega + source[i]);
-        gx += ex[i] * omega, gy += ey[i] * omega;
+      if (b == 1.0) {  // fully covered (eps = 1): f + Omega^s + S, no fluid collision
+        for (int i = 0; i < Q; ++i)
+          out[i] = f[opposite[i]] + (solid[i] - fluid[opposite[i]]) + source[i];
+      } else if constexpr (C == Collision::bgk && S == ForceScheme::nodal) {
+        // BGK with nodal forcing relaxes to the same equilibrium: collide(f) - f
+        // = -(f - f^eq) / tau + S, without colliding again.
+        const double relax = (1.0 - b) * p.omegaPlus;
+        for (int i = 0; i < Q; ++i) {
+          const double omega = f[opposite[i]] - f[i] + solid[i] - fluid[opposite[i]];
+          out[i] = f[i] - relax * (f[i] - fluid[i]) + b * omega + source[i];
+        }
+      } else {
+        double fc[Q];
+        for (int i = 0; i < Q; ++i) fc[i] = f[i];
+        collide<C, S>(fc, p, u2);
+        for (int i = 0; i < Q; ++i) {
+          const double omega = f[opposite[i]] - f[i] + solid[i] - fluid[opposite[i]];
+          out[i] = f[i] + (1.0 - b) * (fc[i] - f[i]) + b * (omega + source[i]);
+        }
       }
-      gave = b * Vec2(gx, gy);
+      gave = b * given;
     }
     for (int i = 0; i < Q; ++i) ctx.dst[i * ctx.stride + cell.node] = out[i];
     node.exchange[k] = gave;

@@ -2,6 +2,7 @@
 // One pointer per direction into structure-of-arrays storage, no test on node
 // kind, so the loop body vectorizes; per-span reductions are combined in span
 // order so the result does not depend on the thread count.
+#include <algorithm>
 #include <vector>
 
 #include "sandflow/lb/node.hpp"
@@ -84,7 +85,30 @@ std::size_t FluidNode::count() const {
   return n;
 }
 
+void FluidNode::exclude(const std::vector<CoveredCell>& cells) {
+  cut_.clear();
+  useCut_ = !cells.empty();
+  if (!useCut_) return;
+  order_.resize(cells.size());
+  for (std::size_t k = 0; k < cells.size(); ++k) order_[k] = cells[k].node;
+  if (!std::is_sorted(order_.begin(), order_.end())) std::sort(order_.begin(), order_.end());
+  // Spans and nodes both ascend: one merge cuts every span around its nodes.
+  std::size_t c = 0;
+  const std::size_t n = order_.size();
+  for (const Span& s : spans) {
+    std::ptrdiff_t at = s.first;
+    const std::ptrdiff_t end = s.first + s.length;
+    while (c < n && order_[c] < at) ++c;
+    for (; c < n && order_[c] < end; ++c) {
+      if (order_[c] > at) cut_.push_back({at, std::int32_t(order_[c] - at)});
+      at = std::max<std::ptrdiff_t>(at, order_[c] + 1);
+    }
+    if (end > at) cut_.push_back({at, std::int32_t(end - at)});
+  }
+}
+
 StepStats FluidNode::streamCollide(const StepContext& ctx) const {
+  const std::vector<Span>& spans = useCut_ ? cut_ : this->spans;
   const bool guo = ctx.forceScheme == ForceScheme::guo;
   if (ctx.collision == Collision::bgk)
     return guo ? runSpans<Collision::bgk, ForceScheme::guo>(ctx, spans)

@@ -100,7 +100,7 @@ StepStats Lattice::step(double machLimit) {
   StepStats stats;
   for (const auto& k : kinds_) stats.merge(k->streamCollide(ctx));
   const auto t1 = Clock::now();
-  stats.merge(covered_.streamCollide(ctx));  // after the bulk: it overwrites its cells
+  stats.merge(covered_.streamCollide(ctx));
   const auto t2 = Clock::now();
   if (!std::isfinite(stats.mass) || !(stats.maxU2 <= machLimit * machLimit))
     reportInstability(stats, machLimit);
@@ -376,6 +376,7 @@ void Lattice::swapCoveredCells(std::vector<CoveredCell>& cells, bool equilibrium
   covered_.cells.swap(cells);
   covered_.equilibriumInterior = equilibriumInterior;
   covered_.exchange.assign(covered_.cells.size(), Vec2::Zero());
+  static_cast<FluidNode&>(*kinds_.front()).exclude(covered_.cells);
 }
 
 void Lattice::pulledMoments(const std::vector<CoveredCell>& cells, std::vector<double>& rho,

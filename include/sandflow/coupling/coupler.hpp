@@ -61,10 +61,12 @@ class Coupler {
 
  private:
   struct Piece {         // one solid's share of one cell
+    std::int64_t node;   // padded lattice node
     std::int32_t cell;   // index into the lattice's covered cells
     std::int32_t owner;  // element slot, or -1 - circle index
     double eps;
     Vec2 arm;
+    bool interior;  // interior of this solid (see CellCover)
   };
   struct Cached {  // the coverage of one solid at the pose it was measured at
     int id = -1;
@@ -78,19 +80,24 @@ class Coupler {
   void solveVelocities(const lb::Lattice& lattice, const dem::Assembly& assembly,
                        const Settings& settings, const std::vector<lb::CoveredCell>& cells,
                        const Vec2& gravity);
+  void sortByNode();
   bool stale(const Cached& c, int id, const Vec2& x, double angle, double area, double reach,
              double radius, bool outside) const;
 
   std::vector<Cached> elements_, circles_;
-  std::vector<Piece> pieces_;
-  std::vector<std::int32_t> cellOf_;  // per padded node: covered-cell index, or -1
-  std::vector<double> epsSum_;        // per covered cell
-  std::vector<std::int32_t> owners_;  // per covered cell
-  std::vector<Vec3> velocity_;        // per element: (vx, vy, w) the fluid sees
-  // Buffers kept from step to step (a fresh one would fault in its pages).
-  std::vector<lb::CoveredCell> cellsBuffer_, sortedBuffer_;
-  std::vector<double> epsBuffer_;
-  std::vector<std::int32_t> ownersBuffer_, renumberBuffer_;
+  std::vector<Piece> pieces_;            // solid by solid, each solid's in its own order
+  std::vector<std::size_t> pieceStart_;  // per solid (elements, then circles): first piece
+  std::vector<std::int32_t> order_;      // pieces in node order
+  std::vector<std::uint32_t> keys_;      // their nodes, in that order
+  std::vector<std::int32_t> orderScratch_, bucketStart_;  // the sort's buffers
+  std::vector<std::uint32_t> keysScratch_;
+  std::vector<std::int32_t> cellStart_;  // per covered cell: its first entry in order_
+  std::vector<double> epsSum_;           // per covered cell
+  std::vector<std::int32_t> owners_;     // per covered cell
+  std::vector<Vec3> velocity_;           // per element: (vx, vy, w) the fluid sees
+  // Kept from step to step (a fresh buffer would fault in its pages).
+  std::vector<lb::CoveredCell> cellsBuffer_;
+  int threads_ = 1;
   std::uint64_t topology_ = 0;
   Settings measuredWith_;
   std::size_t cells_ = 0;

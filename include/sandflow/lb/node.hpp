@@ -62,6 +62,8 @@ class Node {
   virtual void fill(double* /*f*/) const {}
 };
 
+struct CoveredCell;
+
 // Bulk fluid: contiguous spans of a row, fused pull-stream and collide, no branches.
 class FluidNode final : public Node {
  public:
@@ -73,6 +75,14 @@ class FluidNode final : public Node {
   const char* name() const override { return "fluid"; }
   std::size_t count() const override;
   StepStats streamCollide(const StepContext& ctx) const override;
+  // Leaves the covered cells (which their own pass computes) out of the spans
+  // until the next call: the bulk then does no work twice.
+  void exclude(const std::vector<CoveredCell>& cells);
+
+ private:
+  std::vector<Span> cut_;  // the spans less the covered cells
+  bool useCut_ = false;
+  std::vector<std::int64_t> order_;  // scratch: covered nodes in order
 };
 
 // Slot copies f[dst] = f[src] + add, evaluated after the swap. One form serves
@@ -106,9 +116,8 @@ class SlipNode final : public LinkNode {
 };
 
 // Cells covered by moving solids (physics.md §2, Noble & Torczynski): a short
-// list rebuilt every step. The bulk loop has already collided these nodes as
-// plain fluid; this pass, run after it, recomputes them from the same pulled
-// populations with the partially-saturated operator
+// list rebuilt every step and left out of the bulk spans. This pass computes
+// them from the pulled populations with the partially-saturated operator
 //   f' = f + (1 - B) (collide(f) - f) + B (Omega^s + S),
 //   Omega^s_i = f_-i - f_i + f_i^eq(rho, u_s) - f_-i^eq(rho, u),  S_i = 3 w_i e_i.F,
 // and records the momentum B sum_i Omega^s_i e_i it gave the fluid. Interior
