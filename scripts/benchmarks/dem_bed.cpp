@@ -25,7 +25,7 @@
 // fires, the DESS sort and contact-list merge), narrow phase, forces and
 // integration (with the stability checks). The step computes the overlap and
 // the force of a pair in one loop, so the narrow phase alone is timed here as
-// a separate pass of collide() over the same candidate pairs (best of 50), and
+// a separate pass of the narrow phase over the same candidate pairs (best of 50), and
 // forces are that loop's time less the narrow pass. The timing covers the
 // steps only (contacts are counted between them, untimed). other_cpu_s: CPU
 // seconds other processes used during the best repetition (from /proc/stat).
@@ -170,8 +170,9 @@ double narrowPass(const Assembly& a, int threads) {
   for (std::ptrdiff_t k = 0; k < nc; ++k) {
     const Contact& c = cs[k];
     Manifold m;
-    hits += collide(*b.shape[c.a], {b.x[c.a], b.angle[c.a]}, *b.shape[c.b],
-                    {b.x[c.b], b.angle[c.b]}, m);
+    hits += c.discs ? collideDiscs(b.x[c.a], b.reach[c.a], b.x[c.b], b.reach[c.b], m)
+                    : collide(*b.shape[c.a], {b.x[c.a], b.angle[c.a]}, *b.shape[c.b],
+                              {b.x[c.b], b.angle[c.b]}, m);
   }
   const double t = since(t0);
   if (hits < 0) std::printf("?");  // keeps the loop

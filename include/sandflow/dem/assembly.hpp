@@ -36,6 +36,7 @@ struct Contact {
   int idA, idB;               // element ids (stable across deletions)
   Vec2 shear = Vec2::Zero();  // tangential spring force on b (history)
   bool touching = false;
+  bool discs = false;  // both discs: the narrow phase runs inline
   Vec2 normal = Vec2::Zero(), point = Vec2::Zero();
   double overlap = 0.0;
   Vec2 force = Vec2::Zero();  // total contact force on b (on a: the opposite)
