@@ -358,10 +358,13 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
                       formatNumber(maxOverlap) +
                       " of the smaller one's size: reduce the timestep or stiffen the material");
     }
+  std::vector<char>& touching = scratchTouch_;  // for checkSpeeds
+  touching.assign(n, 0);
   for (std::ptrdiff_t k = 0; k < nc; ++k) {
     Contact& c = contacts_[k];
     c.shear = newShear[k];
     if (!c.touching) continue;
+    touching[c.a] = touching[c.b] = 1;
     b.force[c.a] -= c.force;
     b.force[c.b] += c.force;
     b.torque[c.a] -= cross(c.point - b.x[c.a], c.force);
@@ -379,10 +382,7 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
 // moving anything.
 void Assembly::checkSpeeds(double dt) const {
   const Bodies& b = bodies_;
-  std::vector<char>& touching = scratchTouch_;
-  touching.assign(b.size(), 0);
-  for (const Contact& c : contacts_)
-    if (c.touching) touching[c.a] = touching[c.b] = 1;
+  const std::vector<char>& touching = scratchTouch_;  // marked by computeForces
   for (int s = 0; s < b.size(); ++s) {
     if ((b.invMass[s] == 0 && b.invInertia[s] == 0) || !touching[s]) continue;
     const Vec2 v = b.v[s] + dt * b.force[s] / b.mass[s];

@@ -158,7 +158,7 @@ class Assembly {
   // Per-step scratch, kept to avoid allocating in the step.
   std::vector<Vec2> scratchShear_;
   std::vector<char> scratchFlag_;
-  mutable std::vector<char> scratchTouch_;
+  std::vector<char> scratchTouch_;  // per element: in contact this step (computeForces)
   int nextBondId_ = 0;
   double time_ = 0;
 };
