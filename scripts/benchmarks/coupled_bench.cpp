@@ -4,9 +4,13 @@
 // kernels; and the solid-ratio knob: cost per covered cell and the Couette
 // error of each setting.
 //
-//   sandflow_coupled_bench ?--steps N? ?--threads T? ?--quick?
+//   sandflow_coupled_bench ?--steps N? ?--threads T? ?--reps R? ?--quick?
 //
-// Prints plain tables (scripts/bench collects them). Lattice units (h = dt = 1).
+// Prints plain tables and the targets' verdicts (scripts/bench --coupled runs
+// it). Each measurement is the best of R repetitions; the bare kernel and the
+// Manager alternate, so that a noisy neighbour disturbs both alike. Lattice
+// units (h = dt = 1).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -138,17 +142,19 @@ std::pair<double, double> couette(int subcells) {
 
 int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // a line at a time, also into a file
-  int steps = 40, threads = 2;
+  int steps = 40, threads = 2, reps = 3;
   bool quick = false;
   for (int k = 1; k < argc; ++k) {
     if (!std::strcmp(argv[k], "--steps") && k + 1 < argc)
       steps = std::atoi(argv[++k]);
     else if (!std::strcmp(argv[k], "--threads") && k + 1 < argc)
       threads = std::atoi(argv[++k]);
+    else if (!std::strcmp(argv[k], "--reps") && k + 1 < argc)
+      reps = std::max(1, std::atoi(argv[++k]));
     else if (!std::strcmp(argv[k], "--quick"))
       quick = true;
     else {
-      std::fprintf(stderr, "usage: %s ?--steps N? ?--threads T? ?--quick?\n", argv[0]);
+      std::fprintf(stderr, "usage: %s ?--steps N? ?--threads T? ?--reps R? ?--quick?\n", argv[0]);
       return 2;
     }
   }
@@ -159,26 +165,30 @@ int main(int argc, char** argv) {
               bench::bandwidth[threads].copy, threads, roof);
 
   // 1. Fluid only: the bare lattice and the same through the Manager.
-  double bare = 0, managed = 0;
+  double bare = 1e300, managed = 1e300;
   {
     lb::Lattice lattice(lb::resolve(channel(n)));
     lattice.setThreads(threads);
-    for (int k = 0; k < 3; ++k) lattice.step();
-    auto t0 = Clock::now();
-    for (int k = 0; k < steps; ++k) lattice.step();
-    bare = seconds(t0) / steps;
     sim::Manager m;
     m.setThreads(threads);
     m.createLattice(channel(n));
-    managed = timeSteps(m, steps).total;
+    for (int k = 0; k < 3; ++k) lattice.step();
+    for (int r = 0; r < reps; ++r) {
+      auto t0 = Clock::now();
+      for (int k = 0; k < steps; ++k) lattice.step();
+      bare = std::min(bare, seconds(t0) / steps);
+      managed = std::min(managed, timeSteps(m, steps).total);
+    }
   }
+  const double fluidOverhead = (managed / bare - 1) * 100;
   std::printf(
       "fluid only, %dx%d, %d threads: bare lattice %.2f ms/step (%.1f MLUPS, %.1f%% of "
       "roofline), through the Manager %.2f ms/step (%+.2f%%)\n",
       n, n, threads, bare * 1e3, n * n / bare / 1e6, n * n / bare / 1e6 / roof * 100, managed * 1e3,
-      (managed / bare - 1) * 100);
+      fluidOverhead);
 
   // 2. Elements only: the bare assembly and the same through the Manager.
+  double elementOverhead = 0;
   {
     auto build = [](dem::Assembly& a) {
       std::mt19937 rng(3);
@@ -199,16 +209,20 @@ int main(int argc, char** argv) {
     build(a);
     const double dt = m.timestep();
     const int demSteps = quick ? 200 : 1000;
-    auto t0 = Clock::now();
-    for (int k = 0; k < demSteps; ++k) a.step(dt, Vec2::Zero());
-    const double tb = seconds(t0);
-    t0 = Clock::now();
-    for (int k = 0; k < demSteps; ++k) m.step();
-    const double tm = seconds(t0);
+    double tb = 1e300, tm = 1e300;
+    for (int r = 0; r < reps; ++r) {
+      auto t0 = Clock::now();
+      for (int k = 0; k < demSteps; ++k) a.step(dt, Vec2::Zero());
+      tb = std::min(tb, seconds(t0));
+      t0 = Clock::now();
+      for (int k = 0; k < demSteps; ++k) m.step();
+      tm = std::min(tm, seconds(t0));
+    }
+    elementOverhead = (tm / tb - 1) * 100;
     std::printf(
         "elements only, 10000 discs, %d steps: bare assembly %.3f s, through the Manager "
         "%.3f s (%+.2f%%)\n\n",
-        demSteps, tb, tm, (tm / tb - 1) * 100);
+        demSteps, tb, tm, elementOverhead);
   }
 
   // 3. The coupled scene, and 4. each solid-ratio setting on it.
@@ -217,6 +231,7 @@ int main(int argc, char** argv) {
   std::printf("%-10s %6s %8s %8s %8s %8s %8s %8s %8s %8s %7s %8s %8s\n", "solidratio", "discs",
               "cells", "total", "bulk", "covered", "fill", "ratio", "forces", "DEM", "MLUPS",
               "% roof", "ns/cell");
+  double exactShare = 0;
   const int settings[] = {coupling::kExact, 1, 2, 4, 8};
   const char* names[] = {"exact", "1", "2", "4", "8"};
   for (int k = 0; k < 5; ++k) {
@@ -228,7 +243,12 @@ int main(int argc, char** argv) {
     s.subcells = settings[k];
     m.setCoupling(s);
     const int discs = addDiscs(m, n, 0.10, 11);
-    const Split t = timeSteps(m, steps);
+    Split t;
+    for (int r = 0; r < reps; ++r) {
+      const Split x = timeSteps(m, steps);
+      if (r == 0 || x.total < t.total) t = x;
+    }
+    if (k == 0) exactShare = t.mlups / roof * 100;
     std::printf("%-10s %6d %8zu %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f %7.1f %7.1f%% %8.1f\n",
                 names[k], discs, t.cells, t.total * 1e3, t.bulk * 1e3, t.covered * 1e3,
                 t.fill * 1e3, t.coverage * 1e3, t.forces * 1e3, t.dem * 1e3, t.mlups,
@@ -245,5 +265,14 @@ int main(int argc, char** argv) {
     const auto [ev, et] = couette(settings[k]);
     std::printf("%-10s %12.3e %12.3e\n", names[k], ev, et);
   }
+  std::printf(
+      "\ntarget >= 60%% of the fluid-only roofline, coupled scene, exact solid ratio: %s "
+      "(%.1f%%)\n",
+      exactShare >= 60 ? "MET" : "NOT MET", exactShare);
+  std::printf(
+      "target Manager within 2%% of the bare kernels: %s (fluid only %+.2f%%, elements only "
+      "%+.2f%%)\n",
+      fluidOverhead <= 2 && elementOverhead <= 2 ? "MET" : "NOT MET", fluidOverhead,
+      elementOverhead);
   return 0;
 }
