@@ -1,6 +1,7 @@
 #include "sandflow/dem/assembly.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <unordered_map>
@@ -85,6 +86,7 @@ void Assembly::checkMass(const Shape& shape, const Material& material) {
 }
 
 void Assembly::updateMass(int s) {
+  ++generation_;
   const Shape& shape = *bodies_.shape[s];
   const double m = materials_[bodies_.material[s]].density * shape.area();
   bodies_.mass[s] = m;
@@ -152,8 +154,23 @@ double Assembly::effectiveRadius(int a, int b) const {
 }
 
 double Assembly::criticalTimestep() const {
-  // Runs before every step: one cheap pass over the bodies; a linear
-  // material's stiffness is looked up once, not per body.
+  // Materials may be replaced at any time: compare the parameters it depends on.
+  const int nm = materials_.size();
+  std::vector<std::array<double, 5>>& seen = criticalMaterials_;
+  bool same = criticalAt_ == generation_ && int(seen.size()) == nm;
+  seen.resize(nm);
+  for (int mat = 0; mat < nm; ++mat) {
+    const Material& m = materials_[mat];
+    const std::array<double, 5> now = {m.kn, m.ks, m.youngs, m.poisson, double(int(m.law))};
+    same = same && seen[mat] == now;
+    seen[mat] = now;
+  }
+  if (!same) criticalAt_ = generation_, critical_ = measureCriticalTimestep();
+  return critical_;
+}
+
+double Assembly::measureCriticalTimestep() const {
+  // One pass over the bodies; a linear material's stiffness is looked up once.
   const int nm = materials_.size();
   thread_local std::vector<char> used;
   used.assign(nm, 0);

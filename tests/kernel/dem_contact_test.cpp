@@ -201,6 +201,18 @@ TEST(DemContact, CriticalTimestepUsesLightestElementAndStiffestMaterial) {
   disc(a, Vec2(1, 0), 0.5e-3);
   const double m = 2650 * pi * 0.25e-6;
   EXPECT_NEAR(a.criticalTimestep(), 2 * std::sqrt(m / 4e5), 1e-15);
+  // Kept between steps, and measured again after any change that moves it.
+  Material changed = a.materials()[1];
+  changed.ks = 1.6e6;
+  a.materials().replace(1, changed);
+  EXPECT_NEAR(a.criticalTimestep(), 2 * std::sqrt(m / 1.6e6), 1e-15);
+  changed.density = 4 * 2650;
+  a.materials().replace(1, changed);
+  a.updateMass(1);  // the small disc; the large one keeps its mass until told
+  EXPECT_NEAR(a.criticalTimestep(), 2 * std::sqrt(4 * m / 1.6e6), 1e-15);
+  disc(a, Vec2(2, 0), 0.1e-3);
+  EXPECT_NEAR(a.criticalTimestep(), 2 * std::sqrt(4 * 2650 * pi * 1e-8 / 1.6e6), 1e-15);
+  EXPECT_EQ(a.criticalTimestep(), a.measureCriticalTimestep());
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #pragma once
 // The discrete elements of a scene: bodies, materials, contacts, and the DEM
 // step (contact detection, contact forces, integration).
+#include <array>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -77,7 +79,7 @@ class Assembly {
   // material has a finite, positive mass and inertia (a huge or tiny size, or
   // density, can overflow or underflow them).
   static void checkMass(const Shape& shape, const Material& material);
-  void touched() { dess_.reset(), pairsValid_ = false; }  // geometry changed by hand
+  void touched() { dess_.reset(), pairsValid_ = false, ++generation_; }  // changed by hand
 
   // One step. Throws sf::Error ("UNSTABLE ...") before changing anything when a
   // contact overlaps beyond `maxOverlap` of the smaller element or a force is
@@ -85,7 +87,10 @@ class Assembly {
   void step(double dt, const Vec2& gravity);
 
   // 2 sqrt(m/k) for the lightest free element and the stiffest material in use.
+  // Kept until an element or a material changes (updateMass, touched, or a
+  // material's stiffness or law): the Manager asks before every step.
   double criticalTimestep() const;
+  double measureCriticalTimestep() const;  // the same, computed afresh
   Integrator integrator = Integrator::central;
   double maxOverlap = 0.5;
   int threads = 1;
@@ -157,6 +162,10 @@ class Assembly {
   std::vector<Source> sources_;
   // Per-step scratch, kept to avoid allocating in the step.
   std::vector<Vec2> scratchShear_;
+  std::uint64_t generation_ = 1;  // bumped by every change to masses, holds or the element set
+  mutable std::uint64_t criticalAt_ = 0;
+  mutable std::vector<std::array<double, 5>> criticalMaterials_;  // as last measured
+  mutable double critical_ = 0;
   std::vector<char> scratchFlag_;
   std::vector<char> scratchTouch_;  // per element: in contact this step (computeForces)
   int nextBondId_ = 0;
