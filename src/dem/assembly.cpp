@@ -154,18 +154,9 @@ double Assembly::effectiveRadius(int a, int b) const {
 }
 
 double Assembly::criticalTimestep() const {
-  // Materials may be replaced at any time: compare the parameters it depends on.
-  const int nm = materials_.size();
-  std::vector<std::array<double, 5>>& seen = criticalMaterials_;
-  bool same = criticalAt_ == generation_ && int(seen.size()) == nm;
-  seen.resize(nm);
-  for (int mat = 0; mat < nm; ++mat) {
-    const Material& m = materials_[mat];
-    const std::array<double, 5> now = {m.kn, m.ks, m.youngs, m.poisson, double(int(m.law))};
-    same = same && seen[mat] == now;
-    seen[mat] = now;
-  }
-  if (!same) criticalAt_ = generation_, critical_ = measureCriticalTimestep();
+  if (criticalAt_ != generation_ || criticalMaterials_ != materials_.version())
+    criticalAt_ = generation_, criticalMaterials_ = materials_.version(),
+    critical_ = measureCriticalTimestep();
   return critical_;
 }
 
@@ -248,10 +239,10 @@ void Assembly::updatePairs() {
 
   // Contact history carries over by element ids. Both lists are sorted by slot
   // pair, so while no slot has moved a merge does it; after a deletion, a map.
-  std::unordered_map<std::uint64_t, Vec2> history;
+  std::unordered_map<std::uint64_t, std::pair<Vec2, Vec2>> history;  // shear, normal
   if (slotsMoved_)
     for (const Contact& c : contacts_)
-      if (c.touching) history[pairKey(c.idA, c.idB)] = c.shear;
+      if (c.touching) history[pairKey(c.idA, c.idB)] = {c.shear, c.normal};
   std::size_t old = 0;
   std::vector<Contact> next;
   next.reserve(pairs.size());
@@ -266,14 +257,14 @@ void Assembly::updatePairs() {
         bodies_.shape[a]->type() == ShapeType::disc && bodies_.shape[b]->type() == ShapeType::disc;
     if (slotsMoved_) {
       if (auto it = history.find(pairKey(c.idA, c.idB)); it != history.end())
-        c.shear = it->second, c.touching = true;
+        c.shear = it->second.first, c.normal = it->second.second, c.touching = true;
     } else {
       while (old < contacts_.size() &&
              std::pair(contacts_[old].a, contacts_[old].b) < std::pair(a, b))
         ++old;
       if (old < contacts_.size() && contacts_[old].a == a && contacts_[old].b == b &&
           contacts_[old].touching)
-        c.shear = contacts_[old].shear, c.touching = true;
+        c.shear = contacts_[old].shear, c.normal = contacts_[old].normal, c.touching = true;
     }
     next.push_back(c);
   }
@@ -302,6 +293,10 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
     for (int j = 0; j < nm; ++j) laws[i * nm + j] = combine(materials_[i], materials_[j]);
 
   const std::ptrdiff_t nc = std::ptrdiff_t(contacts_.size());
+  if (dampingAt_ != generation_ || dampingMaterials_ != materials_.version()) {
+    for (Contact& c : contacts_) c.damping = -1;
+    dampingAt_ = generation_, dampingMaterials_ = materials_.version();
+  }
   std::vector<Vec2>& newShear = scratchShear_;
   std::vector<char>& excessive = scratchFlag_;
   newShear.resize(nc);
@@ -328,7 +323,14 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
     const Vec2& nrm = m.normal;
     const double vn = vrel.dot(nrm);
     const Vec2 vt = vrel - vn * nrm;
-    const double meff = 1.0 / (b.invMass[i] + b.invMass[j]);
+    // The damping coefficient depends on the masses and materials only: kept
+    // per contact (2 zeta sqrt(m_eff kn) for the linear law, 2 zeta sqrt(m_eff)
+    // for Hertz, whose kn changes with the overlap) until either changes.
+    if (c.damping < 0) {
+      const double meff = 1.0 / (b.invMass[i] + b.invMass[j]);
+      c.damping = law.damping >= 0 ? law.damping
+                                   : 2.0 * law.zeta * std::sqrt(meff * (law.hertz ? 1.0 : law.kn));
+    }
     double kn = law.kn, ks = law.ks, fElastic = law.kn * m.overlap;
     if (law.hertz) {  // stiffnesses grow with the contact radius sqrt(R* d)
       const double root = std::sqrt(effectiveRadius(i, j) * m.overlap);
@@ -336,15 +338,18 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
       kn = 2.0 * law.effectiveYoungs * root;
       ks = 8.0 * law.effectiveShear * root;
     }
-    const double cn = law.damping >= 0 ? law.damping : 2.0 * law.zeta * std::sqrt(meff * kn);
+    const double cn = law.hertz && law.damping < 0 ? c.damping * std::sqrt(kn) : c.damping;
     const double fn = fElastic - cn * vn;  // along the normal, on j
 
-    // Incremental shear spring, kept in the plane of the contact as it turns.
-    Vec2 shear = c.touching ? c.shear : Vec2::Zero();
-    const double kept2 = shear.squaredNorm();
-    shear -= shear.dot(nrm) * nrm;
-    const double left2 = shear.squaredNorm();
-    if (left2 > 0) shear *= std::sqrt(kept2 / left2);
+    // Incremental shear spring, turned with the contact: by the rotation that
+    // takes last step's normal to this one (the projection only sweeps up
+    // round-off).
+    Vec2 shear = Vec2::Zero();
+    if (c.touching) {
+      const double cs = c.normal.dot(nrm), sn = cross(c.normal, nrm);
+      shear = Vec2(cs * c.shear.x() - sn * c.shear.y(), sn * c.shear.x() + cs * c.shear.y());
+      shear -= shear.dot(nrm) * nrm;
+    }
     shear -= ks * dt * vt;
     const double ct = 0.5 * cn;
     Vec2 ft = shear - ct * vt;

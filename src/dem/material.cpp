@@ -83,12 +83,14 @@ int MaterialTable::add(const Material& m) {
   if (find(m.name) >= 0) throw Error("EXISTS MATERIAL", "material \"" + m.name + "\" exists");
   validate(m);
   materials_.push_back(m);
+  ++version_;
   return size() - 1;
 }
 
 void MaterialTable::replace(int i, const Material& m) {
   validate(m);
   materials_.at(i) = m;
+  ++version_;
 }
 
 std::vector<std::string> MaterialTable::names() const {

@@ -215,6 +215,34 @@ TEST(DemContact, CriticalTimestepUsesLightestElementAndStiffestMaterial) {
   EXPECT_EQ(a.criticalTimestep(), a.measureCriticalTimestep());
 }
 
+// The damping coefficient is kept per contact: a change of material or mass
+// must reach it on the next step.
+TEST(DemContact, DampingFollowsMaterialAndMassChanges) {
+  Assembly a;
+  a.materials().add(material(0.5, 0.5));
+  disc(a, Vec2(0, 0), 1e-3);
+  disc(a, Vec2(1.999e-3, 0), 1e-3);
+  const double dt = a.criticalTimestep() / 50;
+  auto expected = [&](double e, double density) {
+    const double m = density * pi * 1e-6;
+    return 2 * dampingRatio(e) * std::sqrt(0.5 * m * 1e5);
+  };
+  a.step(dt, Vec2::Zero());
+  ASSERT_EQ(a.contacts().size(), 1u);
+  ASSERT_TRUE(a.contacts()[0].touching);
+  EXPECT_NEAR(a.contacts()[0].damping, expected(0.5, 2650), 1e-12);
+  Material m = a.materials()[1];
+  m.restitution = 0.1;
+  a.materials().replace(1, m);
+  a.step(dt, Vec2::Zero());
+  EXPECT_NEAR(a.contacts()[0].damping, expected(0.1, 2650), 1e-12);
+  m.density = 1000;
+  a.materials().replace(1, m);
+  a.updateMass(0), a.updateMass(1);
+  a.step(dt, Vec2::Zero());
+  EXPECT_NEAR(a.contacts()[0].damping, expected(0.1, 1000), 1e-12);
+}
+
 }  // namespace
 }  // namespace sf::dem
 

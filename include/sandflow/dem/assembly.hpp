@@ -1,7 +1,6 @@
 #pragma once
 // The discrete elements of a scene: bodies, materials, contacts, and the DEM
 // step (contact detection, contact forces, integration).
-#include <array>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -38,7 +37,8 @@ struct Contact {
   int idA, idB;               // element ids (stable across deletions)
   Vec2 shear = Vec2::Zero();  // tangential spring force on b (history)
   bool touching = false;
-  bool discs = false;  // both discs: the narrow phase runs inline
+  bool discs = false;   // both discs: the narrow phase runs inline
+  double damping = -1;  // normal damping coefficient (see computeForces); < 0: not yet
   Vec2 normal = Vec2::Zero(), point = Vec2::Zero();
   double overlap = 0.0;
   Vec2 force = Vec2::Zero();  // total contact force on b (on a: the opposite)
@@ -87,8 +87,8 @@ class Assembly {
   void step(double dt, const Vec2& gravity);
 
   // 2 sqrt(m/k) for the lightest free element and the stiffest material in use.
-  // Kept until an element or a material changes (updateMass, touched, or a
-  // material's stiffness or law): the Manager asks before every step.
+  // Kept until an element or a material changes (updateMass, touched, or the
+  // material table): the Manager asks before every step.
   double criticalTimestep() const;
   double measureCriticalTimestep() const;  // the same, computed afresh
   Integrator integrator = Integrator::central;
@@ -164,7 +164,9 @@ class Assembly {
   std::vector<Vec2> scratchShear_;
   std::uint64_t generation_ = 1;  // bumped by every change to masses, holds or the element set
   mutable std::uint64_t criticalAt_ = 0;
-  mutable std::vector<std::array<double, 5>> criticalMaterials_;  // as last measured
+  mutable std::uint64_t criticalMaterials_ = 0;  // materials_.version() then
+  // Per-contact damping (Contact::damping) holds for these.
+  std::uint64_t dampingAt_ = 0, dampingMaterials_ = 0;
   mutable double critical_ = 0;
   std::vector<char> scratchFlag_;
   std::vector<char> scratchTouch_;  // per element: in contact this step (computeForces)

@@ -53,9 +53,13 @@ class MaterialTable {
   void replace(int i, const Material& m);  // validated
   std::vector<std::string> names() const;
   int size() const { return int(materials_.size()); }
+  // Changes with every add or replace: what depends on the materials knows to
+  // look again.
+  std::uint64_t version() const { return version_; }
 
  private:
   std::vector<Material> materials_;
+  std::uint64_t version_ = 0;
 };
 
 }  // namespace sf::dem

@@ -30,7 +30,7 @@ inline bool collideDiscs(const Vec2& xa, double ra, const Vec2& xb, double rb, M
   const double dist2 = d.squaredNorm(), reach = ra + rb;
   if (dist2 >= reach * reach) return false;
   const double dist = std::sqrt(dist2);
-  m.normal = dist > 0 ? Vec2(d / dist) : Vec2(1, 0);
+  m.normal = dist > 0 ? Vec2(d * (1.0 / dist)) : Vec2(1, 0);
   m.overlap = reach - dist;
   m.point = xa + m.normal * (ra - 0.5 * m.overlap);
   return true;
