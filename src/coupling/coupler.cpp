@@ -102,19 +102,21 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   pieceStart_.assign(owners + 1, 0);
   for (int o = 0; o < owners; ++o) pieceStart_[o + 1] = pieceStart_[o] + coverOf(o).size();
   pieces_.resize(pieceStart_[owners]);
+  keys_.resize(pieces_.size());
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads) if (owners >= 64)
   for (int o = 0; o < owners; ++o) {
     const std::vector<CellCover>& from = coverOf(o);
-    Piece* to = pieces_.data() + pieceStart_[o];
     const int owner = o < n ? o : -1 - (o - n);
-    for (const CellCover& cc : from)
-      *to++ = {lattice.nodeIndex(cc.i, cc.j), 0, owner, cc.eps, cc.arm, cc.interior};
+    for (std::size_t k = pieceStart_[o], m = 0; m < from.size(); ++k, ++m) {
+      const CellCover& cc = from[m];
+      pieces_[k] = {0, owner, cc.eps, cc.arm, cc.interior};
+      keys_[k] = std::uint32_t(lattice.nodeIndex(cc.i, cc.j));  // fits: see sortByNode
+    }
   }
   sortByNode();
   std::vector<lb::CoveredCell>& cells = cellsBuffer_;  // reused: no fresh pages per step
   cells.clear();
   epsSum_.clear();
-  owners_.clear();
   cellStart_.clear();
   for (std::size_t k = 0; k < order_.size();) {
     const std::uint32_t node = keys_[k];
@@ -129,7 +131,6 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     const bool interior = k - first == 1 && pieces_[order_[first]].interior;
     cells.push_back({node, std::min(1.0, sum), 0.0, 0.0, interior});
     epsSum_.push_back(sum);
-    owners_.push_back(std::int32_t(k - first));
     cellStart_.push_back(std::int32_t(first));
   }
   cellStart_.push_back(std::int32_t(order_.size()));
@@ -188,12 +189,11 @@ void Coupler::blendVelocities(const lb::Lattice& lattice,
 // piece order. Nodes fit 32 bits (the lattice's size limit is far below).
 void Coupler::sortByNode() {
   constexpr int kBits = 11, kBuckets = 1 << kBits;
-  const std::size_t count = pieces_.size();
-  keys_.resize(count), keysScratch_.resize(count);
+  const std::size_t count = keys_.size();
+  keysScratch_.resize(count);
   order_.resize(count), orderScratch_.resize(count);
   std::uint32_t top = 0;
   for (std::size_t k = 0; k < count; ++k) {
-    keys_[k] = std::uint32_t(pieces_[k].node);
     order_[k] = std::int32_t(k);
     top = std::max(top, keys_[k]);
   }
@@ -246,7 +246,7 @@ void Coupler::solveVelocities(const lb::Lattice& lattice, const dem::Assembly& a
     const double beta = cell.interior && settings.equilibriumInterior
                             ? 1.0
                             : cell.eps * (tau - 0.5) / ((1.0 - cell.eps) + (tau - 0.5));
-    const double share = settings.share == Share::equal ? 1.0 / owners_[piece.cell]
+    const double share = settings.share == Share::equal ? 1.0 / sharing(piece.cell)
                                                         : piece.eps / epsSum_[piece.cell];
     const double alpha = piece.eps / epsSum_[piece.cell];
     const double r = rho[piece.cell];
@@ -310,7 +310,7 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
   // Pieces come grouped by owner in a fixed order: the sums do not depend on
   // the thread count.
   for (const Piece& piece : pieces_) {
-    const double share = settings.share == Share::equal ? 1.0 / owners_[piece.cell]
+    const double share = settings.share == Share::equal ? 1.0 / sharing(piece.cell)
                                                         : piece.eps / epsSum_[piece.cell];
     const Vec2 F = -share * scale * exchange[piece.cell];  // the solid gets the opposite
     const double T = cross(piece.arm, F);
@@ -349,7 +349,6 @@ void Coupler::clear(dem::Assembly& assembly) {
   order_.clear();
   cellStart_.clear();
   epsSum_.clear();
-  owners_.clear();
   cells_ = 0;
   fastest_ = SolidSpeed{};
   dem::Bodies& b = assembly.bodies();

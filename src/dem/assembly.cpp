@@ -1,7 +1,6 @@
 #include "sandflow/dem/assembly.hpp"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <unordered_map>
@@ -161,28 +160,17 @@ double Assembly::criticalTimestep() const {
 }
 
 double Assembly::measureCriticalTimestep() const {
-  // One pass over the bodies; a linear material's stiffness is looked up once.
-  const int nm = materials_.size();
-  thread_local std::vector<char> used;
-  used.assign(nm, 0);
   double mMin = std::numeric_limits<double>::infinity(), kMax = 0.0;
   for (int s = 0; s < bodies_.size(); ++s) {
-    const int mat = bodies_.material[s];
-    if (materials_[mat].law == ContactLaw::hertz) {
-      // Hertz: the stiffness at an overlap of 1% of the element's size.
-      const Material& m = materials_[mat];
-      const double r = curvatureRadius(s);
-      kMax = std::max(kMax, std::isfinite(r)
-                                ? 8.0 * m.youngs / (2 * (1 + m.poisson)) * std::sqrt(r * 0.01 * r)
-                                : std::max(m.kn, m.ks));
-    } else {
-      used[mat] = 1;
-    }
+    const Material& m = materials_[bodies_.material[s]];
+    // Hertz: the stiffness at an overlap of 1% of the element's size.
+    const double r = curvatureRadius(s);
+    kMax = std::max(kMax, m.law == ContactLaw::hertz && std::isfinite(r)
+                              ? 8.0 * m.youngs / (2 * (1 + m.poisson)) * std::sqrt(r * 0.01 * r)
+                              : std::max(m.kn, m.ks));
     // Sources count: their clones will be free.
     if (bodies_.invMass[s] > 0 || bodies_.ghost[s]) mMin = std::min(mMin, bodies_.mass[s]);
   }
-  for (int mat = 0; mat < nm; ++mat)
-    if (used[mat]) kMax = std::max(kMax, std::max(materials_[mat].kn, materials_[mat].ks));
   if (!std::isfinite(mMin) || kMax <= 0) return std::numeric_limits<double>::infinity();
   return 2.0 * std::sqrt(mMin / kMax);
 }

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 
 #include "sandflow/core/error.hpp"
 
@@ -57,12 +56,9 @@ void Manager::setCoupling(const coupling::Settings& settings) {
 }
 
 double Manager::timestep() const {
-  return timestepFor(lattice_ || fixedTimestep_ ? 0.0 : assembly_.criticalTimestep());
-}
-
-double Manager::timestepFor(double critical) const {
   if (lattice_) return lattice_->params().dt;
   if (fixedTimestep_) return *fixedTimestep_;
+  const double critical = assembly_.criticalTimestep();
   return std::isfinite(critical) ? critical / 10 : 0.0;
 }
 
@@ -72,10 +68,7 @@ void Manager::setGravity(const Vec2& g) {
 }
 
 void Manager::checkDemTimestep(double dt) const {
-  checkDemTimestep(dt, assembly_.criticalTimestep());
-}
-
-void Manager::checkDemTimestep(double dt, double critical) const {
+  const double critical = assembly_.criticalTimestep();
   if (dt > critical)
     throw Error("VALUE TIMESTEP",
                 "timestep " + formatNumber(dt) + " exceeds the elements' critical timestep " +
@@ -159,17 +152,14 @@ void Manager::stepElements(double dt) {
 }
 
 void Manager::step() {
-  // The elements' critical step, once per step (it is a pass over them).
-  const double critical =
-      assembly_.empty() ? std::numeric_limits<double>::infinity() : assembly_.criticalTimestep();
-  const double dt = timestepFor(critical);
+  const double dt = timestep();
   const double demDt = dt / substeps_;
   if (!assembly_.empty()) {
     if (!(dt > 0))
       throw Error(
           "VALUE TIMESTEP",
           "no timestep: the elements are all held; set one with \"sim configure -timestep\"");
-    checkDemTimestep(demDt, critical);
+    checkDemTimestep(demDt);
   }
   auto stamp = [&](const Error& e) {
     return Error(e.code(), "step " + std::to_string(steps_ + 1) +

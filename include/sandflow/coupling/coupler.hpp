@@ -61,7 +61,6 @@ class Coupler {
 
  private:
   struct Piece {         // one solid's share of one cell
-    std::int64_t node;   // padded lattice node
     std::int32_t cell;   // index into the lattice's covered cells
     std::int32_t owner;  // element slot, or -1 - circle index
     double eps;
@@ -81,6 +80,8 @@ class Coupler {
                        const Settings& settings, const std::vector<lb::CoveredCell>& cells,
                        const Vec2& gravity);
   void sortByNode();
+  // How many solids cover covered cell c (its pieces).
+  int sharing(std::int32_t c) const { return cellStart_[c + 1] - cellStart_[c]; }
   bool stale(const Cached& c, int id, const Vec2& x, double angle, double area, double reach,
              double radius, bool outside) const;
 
@@ -88,12 +89,11 @@ class Coupler {
   std::vector<Piece> pieces_;            // solid by solid, each solid's in its own order
   std::vector<std::size_t> pieceStart_;  // per solid (elements, then circles): first piece
   std::vector<std::int32_t> order_;      // pieces in node order
-  std::vector<std::uint32_t> keys_;      // their nodes, in that order
+  std::vector<std::uint32_t> keys_;      // per piece its node; after sortByNode, in node order
   std::vector<std::int32_t> orderScratch_, bucketStart_;  // the sort's buffers
   std::vector<std::uint32_t> keysScratch_;
   std::vector<std::int32_t> cellStart_;  // per covered cell: its first entry in order_
   std::vector<double> epsSum_;           // per covered cell
-  std::vector<std::int32_t> owners_;     // per covered cell
   std::vector<Vec3> velocity_;           // per element: (vx, vy, w) the fluid sees
   // Kept from step to step (a fresh buffer would fault in its pages).
   std::vector<lb::CoveredCell> cellsBuffer_;

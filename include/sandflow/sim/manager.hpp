@@ -82,8 +82,6 @@ class Manager {
   void warn(const std::string& message);
 
   void checkDemTimestep(double dt) const;
-  void checkDemTimestep(double dt, double critical) const;
-  double timestepFor(double critical) const;  // timestep() given the critical step
   void coupleBeforeFluid();
   void stepElements(double dt);
 
