@@ -4,7 +4,14 @@
 namespace sf::tcl {
 namespace {
 
+// `exit` does not delete the interpreter: recorders are finished here (a csv
+// flushed, a movie's ffmpeg waited for) so that a script's last output is whole.
+void finishAtExit(ClientData data) {
+  closeRecorders(*static_cast<Session*>(data), nullptr);
+}
+
 void deleteSession(ClientData data, Tcl_Interp*) {
+  Tcl_DeleteExitHandler(finishAtExit, data);
   delete static_cast<Session*>(data);
 }
 
@@ -14,7 +21,7 @@ namespace eval ::sf {
   if {[info commands ::sf::warn] eq ""} {
     proc warn {message} { puts stderr "sandflow warning: $message" }
   }
-  namespace export lattice sim run step reset output help material disc wall polygon ellipse superquadric element bond
+  namespace export lattice sim run step reset output help material disc wall polygon ellipse superquadric element bond record plot
   # "source" is also Tcl's command to read a file: ::sf::source is not exported;
   # the application installs a global "source" that serves both (sf::shareSource).
   proc shareSource {} {
@@ -62,6 +69,7 @@ extern "C" int Sandflow_Init(Tcl_Interp* interp) {
   auto* session = new Session;
   session->interp = interp;
   Tcl_CallWhenDeleted(interp, deleteSession, session);
+  Tcl_CreateExitHandler(finishAtExit, session);
   registerLatticeCommands(interp, session);
   registerSimCommands(interp, session);
   registerRunCommands(interp, session);
@@ -71,6 +79,8 @@ extern "C" int Sandflow_Init(Tcl_Interp* interp) {
   registerElementCommands(interp, session);
   registerBondCommands(interp, session);
   registerSourceCommands(interp, session);
+  registerRecordCommand(interp, session);
+  registerPlotCommand(interp, session);
   if (Tcl_Eval(interp, kWarnProc) != TCL_OK) return TCL_ERROR;
   return Tcl_PkgProvide(interp, "sandflow", SANDFLOW_VERSION);
 }

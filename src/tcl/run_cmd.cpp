@@ -15,14 +15,16 @@ const OptionSpec kRunOptions[] = {
     {"-every", "K script", "evaluate script every K steps; break stops the run"},
     {nullptr, nullptr, nullptr}};
 
-// One step, with the kernel's error turned into a Tcl error and warnings passed on.
+// One step, with the kernel's error turned into a Tcl error and warnings passed
+// on, then the recorders (output csv, output movie) that are due.
 int advance(Session& s) {
   const int code = guarded(s.interp, [&] {
     s.manager.step();
     return TCL_OK;
   });
   flushWarnings(s);
-  return code;
+  if (code != TCL_OK) return code;
+  return recordStep(s);
 }
 
 int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
@@ -84,8 +86,11 @@ int Reset(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) 
     Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
-  sessionOf(data).manager.reset();
-  return TCL_OK;
+  // Output of the old scene ends with it.
+  Session& s = sessionOf(data);
+  const int code = closeRecorders(s, nullptr);
+  s.manager.reset();
+  return code;
 }
 
 }  // namespace

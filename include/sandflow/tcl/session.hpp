@@ -2,14 +2,52 @@
 // The state one interpreter's commands share: its own Manager (no globals).
 #include <tcl.h>
 
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "sandflow/sim/manager.hpp"
 
 namespace sf::tcl {
 
+struct Session;
+
+// Output written while runs go on (output csv, output movie): after every step
+// whose count is a multiple of every(), record() is called; finish() completes
+// the file. Both throw sf::Error on failure.
+class Recorder {
+ public:
+  Recorder(std::string path, int every) : path_(std::move(path)), every_(every) {}
+  virtual ~Recorder() = default;
+  virtual void record(const Session& s) = 0;
+  virtual void finish() = 0;
+  virtual const char* kind() const = 0;  // "csv", "movie"
+  const std::string& path() const { return path_; }
+  int every() const { return every_; }
+  long long written() const { return written_; }
+
+ protected:
+  long long written_ = 0;  // records (rows, frames) so far
+
+ private:
+  std::string path_;
+  int every_;
+};
+
 struct Session {
   Tcl_Interp* interp = nullptr;
   sim::Manager manager;
+  std::vector<std::unique_ptr<Recorder>> recorders;
+  ~Session();
 };
+
+// Calls the recorders due after the step just taken. A recorder that fails is
+// finished (as far as it can be) and removed; the Tcl error names its file.
+int recordStep(Session& s);
+// Finishes and removes the recorder writing `path`, or all when path is null.
+int closeRecorders(Session& s, const std::string* path);
+// Adds a recorder after its first record (taken now, for the current state).
+int startRecorder(Session& s, std::unique_ptr<Recorder> recorder);
 
 // Passes the Manager's new warnings to the Tcl procedure ::sf::warn.
 void flushWarnings(Session& session);
@@ -24,6 +62,8 @@ void registerMaterialCommands(Tcl_Interp* interp, Session* session);
 void registerElementCommands(Tcl_Interp* interp, Session* session);
 void registerBondCommands(Tcl_Interp* interp, Session* session);
 void registerSourceCommands(Tcl_Interp* interp, Session* session);
+void registerRecordCommand(Tcl_Interp* interp, Session* session);
+void registerPlotCommand(Tcl_Interp* interp, Session* session);
 
 }  // namespace sf::tcl
 

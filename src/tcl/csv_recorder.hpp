@@ -1,0 +1,35 @@
+#pragma once
+// A recorder that writes a CSV time series: a header line, then one row per
+// record with the step count, the time and the values of a subclass. Each row
+// is flushed as it is written, so that a reader (plot) sees every row so far.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "sandflow/tcl/session.hpp"
+
+namespace sf::tcl {
+
+class CsvRecorder : public Recorder {
+ public:
+  // `columns` are the names after "step,time".
+  CsvRecorder(std::string path, int every, std::vector<std::string> columns);
+  ~CsvRecorder() override;
+  // The first record creates (or truncates) the file and writes the header;
+  // when it fails, no file is left.
+  void record(const Session& s) final;
+  void finish() final;
+
+ protected:
+  // Appends this record's values, one per column; throws sf::Error when the
+  // scene no longer has what a column needs.
+  virtual void values(const Session& s, std::vector<double>& out) const = 0;
+
+ private:
+  void writeOrThrow(const std::string& text);
+  std::vector<std::string> columns_;
+  std::FILE* file_ = nullptr;
+  std::vector<double> scratch_;
+};
+
+}  // namespace sf::tcl

@@ -1,0 +1,12 @@
+#pragma once
+// The verbs of the "output" ensemble that live in files of their own.
+#include <tcl.h>
+
+namespace sf::tcl {
+
+// output csv FILE -elements IDS ?-every K?
+int OutputCsv(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]);
+// output movie FILE ?-every K? ?-fps n? ?view options?
+int OutputMovie(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]);
+
+}  // namespace sf::tcl

@@ -1,0 +1,91 @@
+// The recorders of a session: called after steps, finished on close, reset and exit.
+#include <algorithm>
+
+#include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/session.hpp"
+
+namespace sf::tcl {
+namespace {
+
+int recorderError(Tcl_Interp* interp, const Recorder& r, const Error& e) {
+  return fail(interp, e.code(), std::string(r.kind()) + " output " + r.path() + ": " + e.what());
+}
+
+}  // namespace
+
+Session::~Session() {
+  for (auto& r : recorders) {
+    try {
+      r->finish();
+    } catch (const Error&) {
+      // Nothing to report to at this point; the file is as complete as it got.
+    }
+  }
+}
+
+int recordStep(Session& s) {
+  const long long step = s.manager.stepCount();
+  // One recorder failing does not cost the others this step's record; the
+  // first failure is the Tcl error.
+  int code = TCL_OK;
+  for (std::size_t k = 0; k < s.recorders.size();) {
+    Recorder& r = *s.recorders[k];
+    if (step % r.every() != 0) {
+      ++k;
+      continue;
+    }
+    try {
+      r.record(s);
+      ++k;
+    } catch (const Error& e) {
+      if (code == TCL_OK) code = recorderError(s.interp, r, e);
+      try {
+        r.finish();
+      } catch (const Error&) {
+      }
+      s.recorders.erase(s.recorders.begin() + std::ptrdiff_t(k));
+    }
+  }
+  return code;
+}
+
+int closeRecorders(Session& s, const std::string* path) {
+  if (path && std::none_of(s.recorders.begin(), s.recorders.end(),
+                           [&](const auto& r) { return r->path() == *path; }))
+    return fail(s.interp, "LOOKUP OUTPUT", "no output is being recorded to \"" + *path + "\"");
+  int code = TCL_OK;
+  for (auto it = s.recorders.begin(); it != s.recorders.end();) {
+    if (path && (*it)->path() != *path) {
+      ++it;
+      continue;
+    }
+    try {
+      (*it)->finish();
+    } catch (const Error& e) {
+      if (code == TCL_OK) code = recorderError(s.interp, **it, e);
+    }
+    it = s.recorders.erase(it);
+  }
+  return code;
+}
+
+int startRecorder(Session& s, std::unique_ptr<Recorder> recorder) {
+  if (std::any_of(s.recorders.begin(), s.recorders.end(),
+                  [&](const auto& r) { return r->path() == recorder->path(); }))
+    return fail(s.interp, "VALUE OUTPUT",
+                "\"" + recorder->path() + "\" is already being recorded to; output close it first");
+  try {
+    recorder->record(s);
+  } catch (const Error& e) {
+    const int code = recorderError(s.interp, *recorder, e);
+    try {
+      recorder->finish();
+    } catch (const Error&) {
+    }
+    return code;
+  }
+  s.recorders.push_back(std::move(recorder));
+  return TCL_OK;
+}
+
+}  // namespace sf::tcl
