@@ -21,9 +21,11 @@ constexpr const char* kHelp =
     "  run N ?-every K script?   advance N steps\n"
     "  step      advance one step\n"
     "  reset     empty the scene\n"
-    "  output    write results: vtk PREFIX, csv FILE -elements IDS, list, close\n"
+    "  output    write results: vtk PREFIX, csv FILE -elements IDS, movie FILE, list, close\n"
     "  record FILE ?-every K? ?-quantities LIST?   scene time series (CSV)\n"
     "  plot OUT.png CSVFILE ?-x COL? ?-y COLS? ...   PNG plot of CSV columns (gnuplot)\n"
+    "  view      what pictures show: configure, cget, pixel (-field -vectors -range -size ...)\n"
+    "  snapshot FILE.png ?view options?   a picture of the scene (headless: OSMesa or EGL)\n"
     "  help      this text";
 
 int Help(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {

@@ -3,10 +3,10 @@
 #include <string>
 #include <vector>
 
+#include "output_verbs.hpp"
 #include "sandflow/io/atomic_files.hpp"
 #include "sandflow/io/vtk.hpp"
 #include "sandflow/tcl/args.hpp"
-#include "output_verbs.hpp"
 #include "sandflow/tcl/session.hpp"
 
 namespace sf::tcl {
@@ -79,17 +79,20 @@ int OutputHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) 
     return TCL_ERROR;
   }
   Tcl_SetObjResult(
-      interp, newString(helpText("output",
-                                 {"vtk PREFIX   -> files written: PREFIX.vti (lattice: density, "
-                                  "pressure, velocity, kind) and PREFIX.vtp (elements)",
-                                  "csv FILE -elements IDS ?-every K?   -> FILE; from now on a row "
-                                  "every K steps: step,time, then per element ID x_ID y_ID "
-                                  "angle_ID vx_ID vy_ID w_ID fx_ID fy_ID torque_ID fluidfx_ID "
-                                  "fluidfy_ID fluidtorque_ID",
-                                  "list   -> dict FILE {kind csv|record|movie every K written N}",
-                                  "close ?FILE?   finish one file being recorded, or all of them",
-                                  "help"},
-                                 nullptr)));
+      interp,
+      newString(helpText("output",
+                         {"vtk PREFIX   -> files written: PREFIX.vti (lattice: density, "
+                          "pressure, velocity, kind) and PREFIX.vtp (elements)",
+                          "csv FILE -elements IDS ?-every K?   -> FILE; from now on a row "
+                          "every K steps: step,time, then per element ID x_ID y_ID "
+                          "angle_ID vx_ID vy_ID w_ID fx_ID fy_ID torque_ID fluidfx_ID "
+                          "fluidfy_ID fluidtorque_ID",
+                          "movie FILE ?-every K? ?-fps n? ?view options?   -> FILE (.mp4, "
+                          ".mkv, .mov, .avi, .webm); from now on a frame every K steps, "
+                          "piped to ffmpeg; the movie appears when closed",
+                          "list   -> dict FILE {kind csv|record|movie every K written N}",
+                          "close ?FILE?   finish one file being recorded, or all of them", "help"},
+                         nullptr)));
   return TCL_OK;
 }
 
@@ -99,6 +102,7 @@ void registerOutputCommands(Tcl_Interp* interp, Session* session) {
   makeEnsemble(interp, "::sf::output",
                {{"vtk", OutputVtk},
                 {"csv", OutputCsv},
+                {"movie", OutputMovie},
                 {"list", OutputList},
                 {"close", OutputClose},
                 {"help", OutputHelp}},

@@ -21,7 +21,7 @@ namespace eval ::sf {
   if {[info commands ::sf::warn] eq ""} {
     proc warn {message} { puts stderr "sandflow warning: $message" }
   }
-  namespace export lattice sim run step reset output help material disc wall polygon ellipse superquadric element bond record plot
+  namespace export lattice sim run step reset output help material disc wall polygon ellipse superquadric element bond record plot view snapshot
   # "source" is also Tcl's command to read a file: ::sf::source is not exported;
   # the application installs a global "source" that serves both (sf::shareSource).
   proc shareSource {} {
@@ -79,6 +79,7 @@ extern "C" int Sandflow_Init(Tcl_Interp* interp) {
   registerElementCommands(interp, session);
   registerBondCommands(interp, session);
   registerSourceCommands(interp, session);
+  registerViewCommands(interp, session);
   registerRecordCommand(interp, session);
   registerPlotCommand(interp, session);
   if (Tcl_Eval(interp, kWarnProc) != TCL_OK) return TCL_ERROR;

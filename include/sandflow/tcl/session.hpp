@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "sandflow/render/view_options.hpp"
 #include "sandflow/sim/manager.hpp"
 
 namespace sf::tcl {
@@ -38,6 +39,7 @@ struct Session {
   Tcl_Interp* interp = nullptr;
   sim::Manager manager;
   std::vector<std::unique_ptr<Recorder>> recorders;
+  render::ViewOptions view;  // what the view and snapshots show (view configure)
   ~Session();
 };
 
@@ -62,6 +64,7 @@ void registerMaterialCommands(Tcl_Interp* interp, Session* session);
 void registerElementCommands(Tcl_Interp* interp, Session* session);
 void registerBondCommands(Tcl_Interp* interp, Session* session);
 void registerSourceCommands(Tcl_Interp* interp, Session* session);
+void registerViewCommands(Tcl_Interp* interp, Session* session);
 void registerRecordCommand(Tcl_Interp* interp, Session* session);
 void registerPlotCommand(Tcl_Interp* interp, Session* session);
 

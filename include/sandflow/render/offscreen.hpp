@@ -1,0 +1,26 @@
+#pragma once
+// Off-screen back ends: shared modules, one per OpenGL implementation (OSMesa,
+// EGL), each holding the drawing code and its own context. They are loaded with
+// dlopen so that no process links two libraries that both export the gl*
+// functions (design.md); a process loads at most one.
+#include <string>
+
+#include "sandflow/render/draw_list.hpp"
+
+namespace sf::render {
+
+struct OffscreenApi {
+  int version;       // kOffscreenApiVersion
+  const char* name;  // "osmesa", "egl"
+  // Draws the list into a buffer of list.width x list.height pixels and reads it
+  // back into `out` (rows top-down). False, with `error` set, on failure.
+  bool (*render)(const DrawList& list, Image& out, std::string& error);
+};
+
+inline constexpr int kOffscreenApiVersion = 1;
+inline constexpr const char* kOffscreenEntry = "sandflow_offscreen_api";
+
+}  // namespace sf::render
+
+// Each back-end module exports this one symbol.
+extern "C" const sf::render::OffscreenApi* sandflow_offscreen_api();

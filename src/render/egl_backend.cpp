@@ -1,0 +1,123 @@
+// The EGL back end: Mesa's surfaceless platform (no display, no X) with a
+// pbuffer of each picture's size, desktop OpenGL in the compatibility profile.
+// The fallback for when OSMesa is missing (Mesa 25.1 drops it).
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <GL/gl.h>
+
+#include <cstdio>
+#include <cstring>
+
+#include "sandflow/render/gl_draw.hpp"
+#include "sandflow/render/offscreen.hpp"
+
+namespace sf::render {
+namespace {
+
+struct Egl {
+  EGLDisplay display = EGL_NO_DISPLAY;
+  EGLConfig config = nullptr;
+  EGLContext context = EGL_NO_CONTEXT;
+  EGLSurface surface = EGL_NO_SURFACE;
+  int width = 0, height = 0;
+};
+Egl egl;
+
+std::string eglFailure(const char* what) {
+  char code[16];
+  std::snprintf(code, sizeof code, "0x%04x", unsigned(eglGetError()));
+  return std::string("EGL: ") + what + " failed (error " + code + ")";
+}
+
+bool initialise(std::string& error) {
+  auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+      eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  if (!getPlatformDisplay) {
+    error = "EGL: eglGetPlatformDisplayEXT is missing (no EGL_EXT_platform_base)";
+    return false;
+  }
+  egl.display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  EGLint major = 0, minor = 0;
+  if (egl.display == EGL_NO_DISPLAY || !eglInitialize(egl.display, &major, &minor)) {
+    error = eglFailure("the surfaceless display");
+    return false;
+  }
+  const EGLint attributes[] = {EGL_SURFACE_TYPE,
+                               EGL_PBUFFER_BIT,
+                               EGL_RED_SIZE,
+                               8,
+                               EGL_GREEN_SIZE,
+                               8,
+                               EGL_BLUE_SIZE,
+                               8,
+                               EGL_ALPHA_SIZE,
+                               8,
+                               EGL_RENDERABLE_TYPE,
+                               EGL_OPENGL_BIT,
+                               EGL_NONE};
+  EGLint count = 0;
+  if (!eglChooseConfig(egl.display, attributes, &egl.config, 1, &count) || count < 1) {
+    error = "EGL: no RGBA8 pbuffer configuration for desktop OpenGL";
+    return false;
+  }
+  if (!eglBindAPI(EGL_OPENGL_API)) {
+    error = eglFailure("binding desktop OpenGL");
+    return false;
+  }
+  egl.context = eglCreateContext(egl.display, egl.config, EGL_NO_CONTEXT, nullptr);
+  if (egl.context == EGL_NO_CONTEXT) {
+    error = eglFailure("creating a context");
+    return false;
+  }
+  return true;
+}
+
+bool useSurface(int width, int height, std::string& error) {
+  if (egl.surface != EGL_NO_SURFACE && egl.width == width && egl.height == height) return true;
+  if (egl.surface != EGL_NO_SURFACE) {
+    eglMakeCurrent(egl.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroySurface(egl.display, egl.surface);
+    egl.surface = EGL_NO_SURFACE;
+  }
+  const EGLint size[] = {EGL_WIDTH, width, EGL_HEIGHT, height, EGL_NONE};
+  egl.surface = eglCreatePbufferSurface(egl.display, egl.config, size);
+  if (egl.surface == EGL_NO_SURFACE) {
+    error = eglFailure(
+        ("a " + std::to_string(width) + " x " + std::to_string(height) + " pbuffer").c_str());
+    return false;
+  }
+  egl.width = width;
+  egl.height = height;
+  return true;
+}
+
+bool renderEgl(const DrawList& list, Image& out, std::string& error) {
+  if (egl.context == EGL_NO_CONTEXT && !initialise(error)) return false;
+  if (!useSurface(list.width, list.height, error)) return false;
+  if (!eglMakeCurrent(egl.display, egl.surface, egl.surface, egl.context)) {
+    error = eglFailure("making the context current");
+    return false;
+  }
+  drawList(list);
+  out.width = list.width;
+  out.height = list.height;
+  std::vector<std::uint8_t> buffer(std::size_t(list.width) * list.height * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, list.width, list.height, GL_RGBA, GL_UNSIGNED_BYTE, buffer.data());
+  out.rgba.resize(buffer.size());
+  const std::size_t row = std::size_t(list.width) * 4;
+  for (int j = 0; j < list.height; ++j)  // GL rows run bottom-up
+    std::memcpy(out.rgba.data() + std::size_t(j) * row,
+                buffer.data() + std::size_t(list.height - 1 - j) * row, row);
+  return true;
+}
+
+const OffscreenApi api{kOffscreenApiVersion, "egl", renderEgl};
+
+}  // namespace
+}  // namespace sf::render
+
+extern "C" __attribute__((visibility("default"))) const sf::render::OffscreenApi*
+sandflow_offscreen_api() {
+  return &sf::render::api;
+}

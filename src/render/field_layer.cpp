@@ -1,0 +1,395 @@
+// The lattice layer of a picture: scalar fields per node under a colour map,
+// node kinds, velocity arrows and streamlines.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "sandflow/core/error.hpp"
+#include "sandflow/lb/lattice.hpp"
+#include "scene_parts.hpp"
+
+namespace sf::render {
+namespace {
+
+using lb::NodeKind;
+
+bool holdsFluid(NodeKind k) {
+  return k == NodeKind::fluid || k == NodeKind::velocity || k == NodeKind::pressure;
+}
+
+// d(field)/d(axis) at a node by central differences between fluid neighbours
+// (one-sided next to walls, across periodic edges where the lattice wraps).
+struct Gradient {
+  const lb::Lattice& lattice;
+  const std::vector<Vec2>& u;
+  const std::vector<std::uint8_t>& fluid;
+  bool periodic[2];
+
+  int wrap(int k, int n, int axis, bool& ok) const {
+    if (k >= 0 && k < n) return k;
+    ok = periodic[axis];
+    return (k + n) % n;
+  }
+  // Derivative of component c along axis at (i, j), per node spacing.
+  double operator()(int i, int j, int axis, int c) const {
+    const int nx = lattice.nx(), ny = lattice.ny();
+    auto at = [&](int di, int dj, bool& ok) {
+      ok = true;
+      const int ii = wrap(i + di, nx, 0, ok), jj = wrap(j + dj, ny, 1, ok);
+      const std::size_t n = std::size_t(jj) * nx + ii;
+      ok = ok && fluid[n];
+      return ok ? u[n][c] : 0.0;
+    };
+    bool okPlus = false, okMinus = false;
+    const double plus = axis == 0 ? at(1, 0, okPlus) : at(0, 1, okPlus);
+    const double minus = axis == 0 ? at(-1, 0, okMinus) : at(0, -1, okMinus);
+    const double here = u[std::size_t(j) * nx + i][c];
+    if (okPlus && okMinus) return 0.5 * (plus - minus);
+    if (okPlus) return plus - here;
+    if (okMinus) return here - minus;
+    return 0.0;
+  }
+};
+
+std::array<double, 2> finiteRange(const std::vector<double>& v) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (double x : v)
+    if (std::isfinite(x)) {
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+  if (lo > hi) return {0, 0};
+  return {lo, hi};
+}
+
+}  // namespace
+
+FieldValues sampleField(const lb::Lattice& lattice, Field field,
+                        const std::optional<std::array<double, 2>>& range) {
+  if (field == Field::none || field == Field::nodes)
+    throw Error("VALUE FIELD", "not a scalar field");
+  FieldValues f;
+  f.nx = lattice.nx();
+  f.ny = lattice.ny();
+  const std::size_t n = std::size_t(f.nx) * f.ny;
+  f.value.assign(n, std::numeric_limits<double>::quiet_NaN());
+  f.fluid.assign(n, 0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<float> eps =
+      field == Field::solid ? detail::solidRatios(lattice) : std::vector<float>();
+  std::vector<Vec2> u;
+  if (field == Field::vorticity) u.assign(n, Vec2::Zero());
+  const double p0 =
+      lattice.params().soundSpeed() * lattice.params().soundSpeed() * lattice.params().def.density;
+#pragma omp parallel for schedule(static)
+  for (int j = 0; j < f.ny; ++j)
+    for (int i = 0; i < f.nx; ++i) {
+      const std::size_t k = std::size_t(j) * f.nx + i;
+      f.fluid[k] = holdsFluid(lattice.kind(i, j));
+      if (field == Field::solid) {
+        f.value[k] = f.fluid[k] ? eps[k] : 1.0;
+        continue;
+      }
+      if (!f.fluid[k]) continue;
+      switch (field) {
+        case Field::density:
+          f.value[k] = lattice.density(i, j);
+          break;
+        case Field::pressure:
+          f.value[k] = lattice.pressure(i, j) - p0;
+          break;
+        case Field::velocity:
+          f.value[k] = lattice.velocity(i, j).norm();
+          break;
+        case Field::vorticity:
+          u[k] = lattice.velocity(i, j);
+          break;
+        default:
+          f.value[k] = nan;
+      }
+    }
+  if (field == Field::vorticity) {
+    const auto& sides = lattice.params().def.sides;
+    const Gradient grad{lattice,
+                        u,
+                        f.fluid,
+                        {sides[lb::left].kind == lb::SideKind::periodic,
+                         sides[lb::bottom].kind == lb::SideKind::periodic}};
+    const double h = lattice.params().h;
+#pragma omp parallel for schedule(static)
+    for (int j = 0; j < f.ny; ++j)
+      for (int i = 0; i < f.nx; ++i) {
+        const std::size_t k = std::size_t(j) * f.nx + i;
+        if (f.fluid[k]) f.value[k] = (grad(i, j, 0, 1) - grad(i, j, 1, 0)) / h;
+      }
+  }
+  const bool diverging = field == Field::pressure || field == Field::vorticity;
+  f.map.map = diverging ? ColorMap::coolwarm : ColorMap::viridis;
+  if (range) {
+    f.map.lo = (*range)[0];
+    f.map.hi = (*range)[1];
+  } else if (field == Field::solid) {
+    f.map.lo = 0;
+    f.map.hi = 1;
+  } else {
+    const auto [lo, hi] = finiteRange(f.value);
+    if (diverging) {
+      const double d = std::max(std::abs(lo), std::abs(hi));
+      f.map.lo = -d;
+      f.map.hi = d;
+    } else if (field == Field::velocity) {
+      f.map.lo = 0;
+      f.map.hi = hi;
+    } else {
+      f.map.lo = lo;
+      f.map.hi = hi;
+    }
+  }
+  switch (field) {
+    case Field::solid:
+      f.title = "solid ratio";
+      break;
+    case Field::density:
+      f.title = "density";
+      break;
+    case Field::pressure:
+      f.title = "pressure \u2212 p\u2080";
+      break;
+    case Field::velocity:
+      f.title = "speed |u|";
+      break;
+    default:
+      f.title = "vorticity";
+  }
+  return f;
+}
+
+namespace detail {
+
+Rgb nodeKindColour(lb::NodeKind kind) {
+  switch (kind) {
+    case NodeKind::fluid:
+      return {198, 219, 239};
+    case NodeKind::noslip:
+      return {64, 64, 64};
+    case NodeKind::slip:
+      return {107, 127, 160};
+    case NodeKind::solid:
+      return {20, 20, 20};
+    case NodeKind::velocity:
+      return {0, 158, 115};
+    case NodeKind::pressure:
+      return {230, 159, 0};
+    default:  // open: outside an inlet or outlet, never read
+      return {255, 255, 255};
+  }
+}
+
+std::vector<float> solidRatios(const lb::Lattice& lattice) {
+  const int nx = lattice.nx();
+  std::vector<float> eps(std::size_t(nx) * lattice.ny(), 0.0f);
+  const std::int64_t origin = lattice.nodeIndex(0, 0);
+  const std::int64_t row = lattice.nodeIndex(0, 1) - origin;
+  for (const lb::CoveredCell& c : lattice.coveredCells()) {
+    const std::int64_t r = c.node - origin;
+    const std::int64_t j = r / row, i = r % row;
+    if (i >= 0 && i < nx && j >= 0 && j < lattice.ny())
+      eps[std::size_t(j) * nx + std::size_t(i)] = float(c.eps);
+  }
+  return eps;
+}
+
+Key nodeKindKey(const lb::Lattice& lattice, const std::vector<float>& eps) {
+  static const char* names[] = {"fluid",         "no-slip wall",  "slip wall", "solid",
+                                "velocity edge", "pressure edge", "open"};
+  bool present[8] = {};
+  bool covered = false;
+  for (int j = 0; j < lattice.ny(); ++j)
+    for (int i = 0; i < lattice.nx(); ++i) {
+      present[int(lattice.kind(i, j))] = true;
+      if (lattice.kind(i, j) == NodeKind::fluid && eps[std::size_t(j) * lattice.nx() + i] > 0)
+        covered = true;
+    }
+  Key key;
+  key.title = "node kind";
+  key.continuous = false;
+  for (int k = 0; k <= int(NodeKind::open); ++k)
+    if (present[k]) key.entries.push_back({names[k], nodeKindColour(NodeKind(k))});
+  if (covered) key.entries.push_back({"covered by a solid", kCoveredColour});
+  return key;
+}
+
+Sprite fieldSprite(const lb::Lattice& lattice, const std::vector<float>& eps, Field field,
+                   const FieldValues* values, const WorldMap& world) {
+  // A table of the map at 4096 points: within a quarter of a level of the
+  // interpolated colour, at a fraction of the cost per node.
+  constexpr int kTable = 4096;
+  std::vector<Rgb> table(kTable);
+  if (values)
+    for (int k = 0; k < kTable; ++k)
+      table[std::size_t(k)] = mapColor(values->map.map, (k + 0.5) / kTable);
+  const Rgb nanColour = mapColor(ColorMap::viridis, std::numeric_limits<double>::quiet_NaN());
+  auto colourOf = [&](double v) {
+    const double t = values->map.position(v);
+    if (std::isnan(t)) return nanColour;
+    return table[std::size_t(std::clamp(int(t * kTable), 0, kTable - 1))];
+  };
+  Sprite s;
+  s.width = lattice.nx();
+  s.height = lattice.ny();
+  s.rgba.resize(std::size_t(s.width) * s.height * 4);
+#pragma omp parallel for schedule(static)
+  for (int j = 0; j < s.height; ++j)
+    for (int i = 0; i < s.width; ++i) {
+      const std::size_t k = std::size_t(j) * s.width + i;
+      Rgb c;
+      if (field == Field::nodes) {
+        const NodeKind kind = lattice.kind(i, j);
+        c = kind == NodeKind::fluid && eps[k] > 0 ? kCoveredColour : nodeKindColour(kind);
+      } else if (values->fluid[k] || field == Field::solid) {
+        c = colourOf(values->value[k]);
+      } else {
+        c = kWallColour;
+      }
+      s.rgba[4 * k] = c.r;
+      s.rgba[4 * k + 1] = c.g;
+      s.rgba[4 * k + 2] = c.b;
+      s.rgba[4 * k + 3] = 255;
+    }
+  // Node (i, j) is the cell [origin + i h, origin + (i+1) h) (Lattice::position).
+  const auto& p = lattice.params();
+  const Point lo = world(p.def.origin);
+  const Point hi = world(p.def.origin + Vec2(p.nx * p.h, p.ny * p.h));
+  s.x0 = lo.x;
+  s.y0 = lo.y;
+  s.x1 = hi.x;
+  s.y1 = hi.y;
+  return s;
+}
+
+namespace {
+
+// Velocity (physical units) at a point, bilinear between fluid nodes; nullopt
+// outside the fluid.
+std::optional<Vec2> velocityAt(const lb::Lattice& lattice, const std::vector<float>& eps,
+                               const Vec2& x) {
+  const auto& p = lattice.params();
+  const Vec2 r = (x - p.def.origin) / p.h - Vec2(0.5, 0.5);
+  const int i = int(std::floor(r.x())), j = int(std::floor(r.y()));
+  if (i < 0 || j < 0 || i + 1 >= p.nx || j + 1 >= p.ny) return std::nullopt;
+  const double fx = r.x() - i, fy = r.y() - j;
+  Vec2 u = Vec2::Zero();
+  for (int dj = 0; dj < 2; ++dj)
+    for (int di = 0; di < 2; ++di) {
+      if (!holdsFluid(lattice.kind(i + di, j + dj)) ||
+          eps[std::size_t(j + dj) * p.nx + std::size_t(i + di)] > 0.5f)
+        return std::nullopt;
+      u += (di ? fx : 1 - fx) * (dj ? fy : 1 - fy) * lattice.velocity(i + di, j + dj);
+    }
+  return u;
+}
+
+double maxSpeed(const lb::Lattice& lattice) {
+  double m = 0;
+  for (int j = 0; j < lattice.ny(); ++j)
+    for (int i = 0; i < lattice.nx(); ++i)
+      if (holdsFluid(lattice.kind(i, j))) m = std::max(m, lattice.velocity(i, j).norm());
+  return m;
+}
+
+}  // namespace
+
+void addArrows(const lb::Lattice& lattice, const std::vector<float>& eps, const WorldMap& world,
+               float spacing, float scale, Rgba colour, std::vector<Stroke>& out) {
+  const double umax = maxSpeed(lattice);
+  if (!(umax > 0)) return;
+  const float cell = world.length(lattice.params().h);
+  const int stride = std::max(1, int(std::ceil(spacing / cell)));
+  const float longest = 0.9f * float(stride) * cell;
+  for (int j = stride / 2; j < lattice.ny(); j += stride)
+    for (int i = stride / 2; i < lattice.nx(); i += stride) {
+      if (!holdsFluid(lattice.kind(i, j)) || eps[std::size_t(j) * lattice.nx() + i] > 0.5f)
+        continue;
+      const Vec2 u = lattice.velocity(i, j);
+      const double speed = u.norm();
+      if (speed < 1e-3 * umax) continue;
+      const float len = float(speed / umax) * longest;
+      const Vec2 d = u / speed;
+      const Point c = world(lattice.position(i, j));
+      const Point tip{c.x + 0.5f * len * float(d.x()), c.y + 0.5f * len * float(d.y())};
+      const Point tail{c.x - 0.5f * len * float(d.x()), c.y - 0.5f * len * float(d.y())};
+      out.push_back({tail, tip, scale, colour});
+      const float head = std::max(3.0f * scale, 0.3f * len);
+      for (double turn : {2.6, -2.6}) {  // barbs about 150 degrees off the shaft
+        const Vec2 b = rotated(d, turn);
+        out.push_back(
+            {tip, {tip.x + head * float(b.x()), tip.y + head * float(b.y())}, scale, colour});
+      }
+    }
+}
+
+void addStreamlines(const lb::Lattice& lattice, const std::vector<float>& eps,
+                    const WorldMap& world, float spacing, float scale, Rgba colour,
+                    std::vector<Stroke>& out) {
+  const double umax = maxSpeed(lattice);
+  if (!(umax > 0)) return;
+  const double h = lattice.params().h;
+  // Evenly spaced lines (after Jobard & Lefer): a line stops where it comes
+  // closer than about `separation` to another one, and a seed starts only in
+  // empty space. The occupancy grid has cells of half the separation.
+  const double separation = 2.0 * spacing / world.pixelsPerUnit;  // world units
+  const double cellSize = 0.5 * separation;
+  const auto& p = lattice.params();
+  const int gx = std::max(1, int(std::ceil(p.nx * h / cellSize)));
+  const int gy = std::max(1, int(std::ceil(p.ny * h / cellSize)));
+  std::vector<int> owner(std::size_t(gx) * gy, -1);
+  auto cellOf = [&](const Vec2& x) -> long {
+    const int i = int((x.x() - p.def.origin.x()) / cellSize);
+    const int j = int((x.y() - p.def.origin.y()) / cellSize);
+    if (i < 0 || j < 0 || i >= gx || j >= gy) return -1;
+    return long(j) * gx + i;
+  };
+  // Free if no other line holds this cell or its neighbours.
+  auto free = [&](const Vec2& x, int line) {
+    const long c = cellOf(x);
+    if (c < 0) return false;
+    const int ci = int(c % gx), cj = int(c / gx);
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int di = -1; di <= 1; ++di) {
+        const int i = ci + di, j = cj + dj;
+        if (i < 0 || j < 0 || i >= gx || j >= gy) continue;
+        const int o = owner[std::size_t(j) * gx + i];
+        if (o >= 0 && o != line) return false;
+      }
+    return true;
+  };
+  // Steps of half a node, or of 2 pixels where nodes are smaller than that.
+  const double ds = std::max(0.5 * h, 2.0 * scale / world.pixelsPerUnit);
+  const int maxSteps = int(2.0 * (p.nx + p.ny) * h / ds) + 1;
+  int line = 0;
+  for (int j = 0; j < gy; ++j)
+    for (int i = 0; i < gx; ++i, ++line) {
+      const Vec2 seed = p.def.origin + cellSize * Vec2(i + 0.5, j + 0.5);
+      if (!free(seed, line) || !velocityAt(lattice, eps, seed)) continue;
+      for (double direction : {1.0, -1.0}) {
+        Vec2 x = seed;
+        for (int step = 0; step < maxSteps; ++step) {
+          // Midpoint rule along the unit direction.
+          const auto u1 = velocityAt(lattice, eps, x);
+          if (!u1 || u1->norm() < 1e-3 * umax) break;
+          const Vec2 mid = x + direction * 0.5 * ds * u1->normalized();
+          const auto u2 = velocityAt(lattice, eps, mid);
+          if (!u2 || u2->norm() < 1e-3 * umax) break;
+          const Vec2 next = x + direction * ds * u2->normalized();
+          if (!free(next, line)) break;
+          out.push_back({world(x), world(next), scale, colour});
+          const long c = cellOf(next);
+          if (owner[std::size_t(c)] < 0) owner[std::size_t(c)] = line;
+          x = next;
+        }
+      }
+    }
+}
+
+}  // namespace detail
+}  // namespace sf::render

@@ -1,0 +1,60 @@
+// The OSMesa back end: Mesa's software rasteriser into a buffer we own; needs
+// no display and no X. One context for the life of the process, made current
+// on a buffer of each picture's size.
+#include <GL/osmesa.h>
+
+#include <cstring>
+
+#include "sandflow/render/gl_draw.hpp"
+#include "sandflow/render/offscreen.hpp"
+
+namespace sf::render {
+namespace {
+
+OSMesaContext context = nullptr;
+
+bool renderOsmesa(const DrawList& list, Image& out, std::string& error) {
+  if (!context) {
+    // Compatibility profile, no depth buffer: the pictures are 2D, in drawing order.
+    context = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);
+    if (!context) {
+      error = "OSMesa could not create a context";
+      return false;
+    }
+  }
+  GLint maxWidth = 0, maxHeight = 0;
+  OSMesaGetIntegerv(OSMESA_MAX_WIDTH, &maxWidth);
+  OSMesaGetIntegerv(OSMESA_MAX_HEIGHT, &maxHeight);
+  if (list.width < 1 || list.height < 1 || list.width > maxWidth || list.height > maxHeight) {
+    error = "OSMesa draws at most " + std::to_string(maxWidth) + " x " + std::to_string(maxHeight) +
+            " pixels, asked for " + std::to_string(list.width) + " x " +
+            std::to_string(list.height);
+    return false;
+  }
+  std::vector<std::uint8_t> buffer(std::size_t(list.width) * list.height * 4);
+  if (!OSMesaMakeCurrent(context, buffer.data(), GL_UNSIGNED_BYTE, list.width, list.height)) {
+    error = "OSMesa could not use a " + std::to_string(list.width) + " x " +
+            std::to_string(list.height) + " buffer";
+    return false;
+  }
+  drawList(list);
+  // OSMesa's rows run bottom-up; the image's top-down.
+  out.width = list.width;
+  out.height = list.height;
+  out.rgba.resize(buffer.size());
+  const std::size_t row = std::size_t(list.width) * 4;
+  for (int j = 0; j < list.height; ++j)
+    std::memcpy(out.rgba.data() + std::size_t(j) * row,
+                buffer.data() + std::size_t(list.height - 1 - j) * row, row);
+  return true;
+}
+
+const OffscreenApi api{kOffscreenApiVersion, "osmesa", renderOsmesa};
+
+}  // namespace
+}  // namespace sf::render
+
+extern "C" __attribute__((visibility("default"))) const sf::render::OffscreenApi*
+sandflow_offscreen_api() {
+  return &sf::render::api;
+}

@@ -1,0 +1,337 @@
+// The layout of a picture -- world window, colour keys, time label -- and the
+// assembly of its layers into a draw list.
+#include "sandflow/render/scene_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "sandflow/core/error.hpp"
+#include "sandflow/lb/lattice.hpp"
+#include "sandflow/render/text.hpp"
+#include "scene_parts.hpp"
+
+namespace sf::render {
+namespace {
+
+using detail::Key;
+using detail::WorldMap;
+
+// Sizes in pixels of a scale-1 picture.
+constexpr int kFont = 13;
+constexpr float kPad = 8, kBarWidth = 16, kSwatch = 12, kGap = 5, kArrowSpacing = 22;
+constexpr Rgba kText{20, 20, 20, 255};
+constexpr Rgba kFrame{60, 60, 60, 255};
+
+struct Extent {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool empty = true;
+  void add(double xa, double ya, double xb, double yb) {
+    if (empty) {
+      *this = {xa, ya, xb, yb, false};
+      return;
+    }
+    x0 = std::min(x0, xa);
+    y0 = std::min(y0, ya);
+    x1 = std::max(x1, xb);
+    y1 = std::max(y1, yb);
+  }
+};
+
+Extent latticeExtent(const sim::Manager& m) {
+  Extent e;
+  if (!m.hasLattice()) return e;
+  const auto& p = m.lattice().params();
+  e.add(p.def.origin.x(), p.def.origin.y(), p.def.origin.x() + p.nx * p.h,
+        p.def.origin.y() + p.ny * p.h);
+  return e;
+}
+
+Extent elementExtent(const sim::Manager& m) {
+  Extent e;
+  const dem::Bodies& b = m.assembly().bodies();
+  for (int s = 0; s < b.size(); ++s) {
+    const dem::Box box =
+        b.shape[std::size_t(s)]->bounds(b.x[std::size_t(s)], b.angle[std::size_t(s)]);
+    e.add(box.lo.x(), box.lo.y(), box.hi.x(), box.hi.y());
+  }
+  return e;
+}
+
+// Labels for the ends and quarters of a range, with as many digits as it takes
+// to tell them apart.
+std::vector<std::string> tickLabels(double lo, double hi, int count) {
+  std::vector<std::string> labels(static_cast<std::size_t>(count));
+  for (int precision = 3; precision <= 12; ++precision) {
+    for (int k = 0; k < count; ++k) {
+      double x = lo + (hi - lo) * k / (count - 1);
+      if (std::abs(x) < 1e-12 * std::max(std::abs(lo), std::abs(hi))) x = 0;  // no "-1e-17"
+      char text[32];
+      std::snprintf(text, sizeof text, "%.*g", precision, x);
+      labels[std::size_t(k)] = text;
+    }
+    bool distinct = true;
+    for (int k = 1; k < count; ++k)
+      distinct = distinct && labels[std::size_t(k)] != labels[std::size_t(k) - 1];
+    if (distinct || !(hi > lo)) break;
+  }
+  return labels;
+}
+
+constexpr int kTicks = 5;
+
+float keyWidth(const Key& key, TextRenderer& text) {
+  float w = text.width(key.title, kFont);
+  if (key.continuous) {
+    for (const std::string& label : tickLabels(key.map.lo, key.map.hi, kTicks))
+      w = std::max(w, kBarWidth + kGap + text.width(label, kFont));
+  } else {
+    for (const auto& [name, colour] : key.entries)
+      w = std::max(w, kSwatch + kGap + text.width(name, kFont));
+  }
+  return std::ceil(w) + 2 * kPad;
+}
+
+struct Layout {
+  WorldMap world;
+  Rect viewport;
+  std::vector<float> keyX;  // left edge of each key column
+  float keyTop = 0, keyBottom = 0;
+};
+
+// All in scale-1 pixels; buildScene multiplies.
+Layout layOut(const std::array<double, 4>& region, int width, int height, bool label,
+              const std::vector<Key>& keys, TextRenderer* text) {
+  Layout l;
+  float keysWidth = 0;
+  std::vector<float> widths;
+  for (const Key& k : keys) {
+    widths.push_back(keyWidth(k, *text));
+    keysWidth += widths.back();
+  }
+  const float top = label ? kFont + 10.0f : 0.0f;
+  const float ax0 = kPad, ay0 = kPad;
+  const float ax1 = std::max(ax0 + 1, float(width) - kPad - keysWidth);
+  const float ay1 = std::max(ay0 + 1, float(height) - kPad - top);
+  const double ww = region[2] - region[0], wh = region[3] - region[1];
+  const double s = std::min((ax1 - ax0) / ww, (ay1 - ay0) / wh);
+  const double pw = ww * s, ph = wh * s;
+  const double px0 = ax0 + 0.5 * ((ax1 - ax0) - pw), py0 = ay0 + 0.5 * ((ay1 - ay0) - ph);
+  l.world = {region[0], region[1], px0, py0, s};
+  l.viewport = {float(px0), float(py0), float(px0 + pw), float(py0 + ph)};
+  float x = ax1;
+  for (float w : widths) {
+    l.keyX.push_back(x);
+    x += w;
+  }
+  l.keyBottom = l.viewport.y0;
+  l.keyTop = l.viewport.y1;
+  return l;
+}
+
+void addFrame(const Rect& r, float width, Rgba colour, std::vector<Stroke>& out) {
+  detail::addOutline({{r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}}, width, colour, out);
+}
+
+void addKey(const Key& key, float x, float bottom, float top, int s, TextRenderer& text,
+            DrawList& list) {
+  const float f = float(s);
+  const float left = (x + kPad) * f;
+  const int font = kFont * s;
+  const float titleBase = top * f - font * 0.8f;
+  list.overlays.push_back(text.render(key.title, font, kText, left, titleBase));
+  const float barTop = titleBase - font * 0.8f;
+  const float barBottom = bottom * f + font * 0.4f;
+  if (key.continuous) {
+    Sprite bar;
+    bar.width = 1;
+    bar.height = std::max(2, int(barTop - barBottom));
+    for (int k = 0; k < bar.height; ++k) {
+      const double t = (k + 0.5) / bar.height;
+      const Rgb c = mapColor(key.map.map, t);
+      bar.rgba.insert(bar.rgba.end(), {c.r, c.g, c.b, 255});
+    }
+    bar.x0 = left;
+    bar.x1 = left + kBarWidth * f;
+    bar.y0 = barBottom;
+    bar.y1 = barBottom + float(bar.height);
+    list.overlays.push_back(std::move(bar));
+    addFrame(
+        {left, barBottom, left + kBarWidth * f, barBottom + float(list.overlays.back().height)}, f,
+        kFrame, list.overlayStrokes);
+    const auto labels = tickLabels(key.map.lo, key.map.hi, kTicks);
+    const float span = float(list.overlays.back().height);
+    for (int k = 0; k < kTicks; ++k) {
+      const float y = barBottom + span * k / (kTicks - 1);
+      list.overlayStrokes.push_back(
+          {{left + kBarWidth * f, y}, {left + (kBarWidth + 3) * f, y}, f, kFrame});
+      list.overlays.push_back(text.render(labels[std::size_t(k)], font, kText,
+                                          left + (kBarWidth + kGap) * f, y - 0.35f * font));
+    }
+  } else {
+    float y = barTop - kSwatch * f;
+    for (const auto& [name, colour] : key.entries) {
+      Sprite swatch;
+      swatch.width = swatch.height = 1;
+      swatch.rgba = {colour.r, colour.g, colour.b, 255};
+      swatch.x0 = left;
+      swatch.x1 = left + kSwatch * f;
+      swatch.y0 = y;
+      swatch.y1 = y + kSwatch * f;
+      list.overlays.push_back(std::move(swatch));
+      addFrame({left, y, left + kSwatch * f, y + kSwatch * f}, f, kFrame, list.overlayStrokes);
+      list.overlays.push_back(
+          text.render(name, font, kText, left + (kSwatch + kGap) * f, y + 0.15f * font));
+      y -= (kSwatch + 6) * f;
+    }
+  }
+}
+
+std::string timeLabel(const sim::Manager& m) {
+  char text[96];
+  std::snprintf(text, sizeof text, "t = %.6g   step %lld", m.time(), m.stepCount());
+  return text;
+}
+
+struct Keys {
+  std::vector<Key> keys;
+  std::optional<FieldValues> field;
+  detail::ElementColouring colouring;
+};
+
+Keys keysFor(const sim::Manager& m, const ViewOptions& v, const std::vector<float>* eps) {
+  Keys k;
+  const Field field = shownField(v, m.hasLattice());
+  if (m.hasLattice() && field == Field::nodes) {
+    k.keys.push_back(detail::nodeKindKey(m.lattice(), *eps));
+  } else if (m.hasLattice() && field != Field::none) {
+    k.field = sampleField(m.lattice(), field, v.range);
+    Key key;
+    key.title = k.field->title;
+    key.map = k.field->map;
+    k.keys.push_back(std::move(key));
+  }
+  Key elementKey;
+  k.colouring = detail::elementColouring(m, v, &elementKey);
+  if (v.colorBy != ColorBy::none && !m.assembly().empty()) k.keys.push_back(std::move(elementKey));
+  return k;
+}
+
+}  // namespace
+
+std::array<double, 4> shownRegion(const sim::Manager& m, const ViewOptions& v) {
+  if (v.region) return *v.region;
+  Extent e = latticeExtent(m);
+  if (e.empty) {
+    e = elementExtent(m);
+    if (e.empty) return {0, 0, 1, 1};
+    const double pad = 0.05 * std::max({e.x1 - e.x0, e.y1 - e.y0, 1e-300});
+    const double sx = e.x1 - e.x0 > 0 ? pad : std::max(pad, 1.0);
+    const double sy = e.y1 - e.y0 > 0 ? pad : std::max(pad, 1.0);
+    return {e.x0 - sx, e.y0 - sy, e.x1 + sx, e.y1 + sy};
+  }
+  return {e.x0, e.y0, e.x1, e.y1};
+}
+
+void checkOptions(const ViewOptions& v) {
+  if (v.range) {
+    const auto [lo, hi] = *v.range;
+    if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi > lo))
+      throw Error("VALUE RANGE", "-range {lo hi} needs finite lo < hi, got {" + formatNumber(lo) +
+                                     " " + formatNumber(hi) + "}");
+  }
+  if (v.width < 1 || v.height < 1 || v.width > kMaxPictureSide || v.height > kMaxPictureSide)
+    throw Error("VALUE SIZE", "-size {W H} must be 1 to " + std::to_string(kMaxPictureSide) +
+                                  " pixels each, got {" + std::to_string(v.width) + " " +
+                                  std::to_string(v.height) + "}");
+  if (v.region) {
+    const auto [x0, y0, x1, y1] = *v.region;
+    if (!std::isfinite(x0) || !std::isfinite(y0) || !std::isfinite(x1) || !std::isfinite(y1) ||
+        !(x1 > x0) || !(y1 > y0))
+      throw Error("VALUE REGION", "-region {x0 y0 x1 y1} needs x0 < x1 and y0 < y1, got {" +
+                                      formatNumber(x0) + " " + formatNumber(y0) + " " +
+                                      formatNumber(x1) + " " + formatNumber(y1) + "}");
+  }
+}
+
+void checkView(const sim::Manager& m, const ViewOptions& v) {
+  checkOptions(v);
+  const Field field = shownField(v, m.hasLattice());
+  if (field != Field::none && !m.hasLattice())
+    throw Error("VALUE FIELD", std::string("-field ") + fieldNames[int(field)] +
+                                   " needs a lattice, and the scene has none");
+  if (v.region) {
+    const auto [x0, y0, x1, y1] = *v.region;
+    Extent scene = latticeExtent(m);
+    const Extent el = elementExtent(m);
+    if (!el.empty) scene.add(el.x0, el.y0, el.x1, el.y1);
+    if (!scene.empty && (x1 < scene.x0 || x0 > scene.x1 || y1 < scene.y0 || y0 > scene.y1)) {
+      const std::string what =
+          m.hasLattice() ? (el.empty ? "the lattice lies" : "the lattice and elements lie")
+                         : "the elements lie";
+      throw Error("VALUE REGION", "-region {" + formatNumber(x0) + " " + formatNumber(y0) + " " +
+                                      formatNumber(x1) + " " + formatNumber(y1) +
+                                      "} shows nothing of the scene: " + what + " within {" +
+                                      formatNumber(scene.x0) + " " + formatNumber(scene.y0) + " " +
+                                      formatNumber(scene.x1) + " " + formatNumber(scene.y1) + "}");
+    }
+  }
+}
+
+DrawList buildScene(const sim::Manager& m, const ViewOptions& v, int scale) {
+  checkView(m, v);
+  TextRenderer& text = sharedTextRenderer();
+  const Field field = shownField(v, m.hasLattice());
+  std::vector<float> eps;
+  if (m.hasLattice()) eps = detail::solidRatios(m.lattice());
+  const Keys keys = keysFor(m, v, &eps);
+  const Layout l = layOut(shownRegion(m, v), v.width, v.height, v.label, keys.keys, &text);
+  const float f = float(scale);
+
+  DrawList list;
+  list.width = v.width * scale;
+  list.height = v.height * scale;
+  list.viewport = {l.viewport.x0 * f, l.viewport.y0 * f, l.viewport.x1 * f, l.viewport.y1 * f};
+  WorldMap world = l.world;
+  world.px0 *= f;
+  world.py0 *= f;
+  world.pixelsPerUnit *= f;
+
+  if (m.hasLattice() && field != Field::none) {
+    list.hasField = true;
+    list.field =
+        detail::fieldSprite(m.lattice(), eps, field, keys.field ? &*keys.field : nullptr, world);
+  }
+  if (m.hasLattice()) {
+    // Arrows and streamlines in white over the dark end of viridis, else black.
+    const bool dark = field == Field::velocity || field == Field::density;
+    const Rgba ink = dark ? Rgba{255, 255, 255, 230} : Rgba{0, 0, 0, 230};
+    if (v.streamlines)
+      detail::addStreamlines(m.lattice(), eps, world, kArrowSpacing * f, f, ink, list.fieldStrokes);
+    if (v.vectors)
+      detail::addArrows(m.lattice(), eps, world, kArrowSpacing * f, f, ink, list.fieldStrokes);
+  }
+  detail::addElements(m, v, keys.colouring, world, f, list);
+
+  addFrame(list.viewport, f, kFrame, list.overlayStrokes);
+  if (v.label)
+    list.overlays.push_back(text.render(timeLabel(m), kFont * scale, kText, kPad * f,
+                                        float(list.height) - (kFont + 4) * f));
+  for (std::size_t k = 0; k < keys.keys.size(); ++k)
+    addKey(keys.keys[k], l.keyX[k], l.keyBottom, l.keyTop, scale, text, list);
+  return list;
+}
+
+std::array<double, 2> worldToImage(const sim::Manager& m, const ViewOptions& v, double x,
+                                   double y) {
+  std::vector<float> eps;
+  if (m.hasLattice()) eps = detail::solidRatios(m.lattice());
+  const Keys keys = keysFor(m, v, &eps);
+  const Layout l =
+      layOut(shownRegion(m, v), v.width, v.height, v.label, keys.keys, &sharedTextRenderer());
+  const WorldMap& w = l.world;
+  return {w.px0 + (x - w.wx0) * w.pixelsPerUnit,
+          double(v.height) - (w.py0 + (y - w.wy0) * w.pixelsPerUnit)};
+}
+
+}  // namespace sf::render

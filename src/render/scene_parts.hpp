@@ -1,0 +1,71 @@
+#pragma once
+// The pieces buildScene puts together (internal to the render module).
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sandflow/geometry/vec2.hpp"
+#include "sandflow/render/scene_builder.hpp"
+
+namespace sf::render::detail {
+
+// World coordinates to buffer pixels: a uniform scale (the world window keeps
+// its aspect ratio) about the window's lower-left corner.
+struct WorldMap {
+  double wx0 = 0, wy0 = 0;  // world point at the viewport's lower-left corner
+  double px0 = 0, py0 = 0;  // that corner in pixels
+  double pixelsPerUnit = 1;
+  Point operator()(const Vec2& w) const {
+    return {float(px0 + (w.x() - wx0) * pixelsPerUnit), float(py0 + (w.y() - wy0) * pixelsPerUnit)};
+  }
+  float length(double worldLength) const { return float(worldLength * pixelsPerUnit); }
+};
+
+// A colour key beside the view: a continuous bar, or swatches with names.
+struct Key {
+  std::string title;
+  bool continuous = true;
+  ScalarMap map;                                     // continuous
+  std::vector<std::pair<std::string, Rgb>> entries;  // categorical
+};
+
+inline Rgba opaque(const Rgb& c, std::uint8_t alpha = 255) {
+  return {c.r, c.g, c.b, alpha};
+}
+
+// Colours of the node kinds (and of fluid cells covered by a moving solid).
+Rgb nodeKindColour(lb::NodeKind kind);
+inline constexpr Rgb kCoveredColour{148, 103, 189};
+inline constexpr Rgb kWallColour{89, 89, 89};  // non-fluid nodes under a scalar field
+
+// The solid ratio of each interior node (row-major from (0, 0)), from the
+// lattice's list of covered cells.
+std::vector<float> solidRatios(const lb::Lattice& lattice);
+Key nodeKindKey(const lb::Lattice& lattice, const std::vector<float>& eps);
+
+// The lattice layer: one texel per node.
+Sprite fieldSprite(const lb::Lattice& lattice, const std::vector<float>& eps, Field field,
+                   const FieldValues* values, const WorldMap& world);
+// Velocity arrows on a grid about `spacing` pixels apart, and streamlines;
+// neither enters cells more than half covered by a solid.
+void addArrows(const lb::Lattice& lattice, const std::vector<float>& eps, const WorldMap& world,
+               float spacing, float scale, Rgba colour, std::vector<Stroke>& out);
+void addStreamlines(const lb::Lattice& lattice, const std::vector<float>& eps,
+                    const WorldMap& world, float spacing, float scale, Rgba colour,
+                    std::vector<Stroke>& out);
+
+// Elements, bonds, breaks and contact forces. `key` receives the colour key of
+// -colorby (when there is one).
+struct ElementColouring {
+  ColorBy by = ColorBy::none;
+  ScalarMap map;  // speed, mass
+};
+ElementColouring elementColouring(const sim::Manager& m, const ViewOptions& v, Key* key);
+void addElements(const sim::Manager& m, const ViewOptions& v, const ElementColouring& colouring,
+                 const WorldMap& world, float scale, DrawList& list);
+
+// A stroke's square-ended outline around a closed polygon.
+void addOutline(const std::vector<Point>& outline, float width, Rgba colour,
+                std::vector<Stroke>& out);
+
+}  // namespace sf::render::detail

@@ -1,0 +1,188 @@
+// The picture pipeline without OpenGL: colour maps against the published
+// tables, field sampling against exact fields, the scene builder's geometry.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../kernel/coupled_helpers.hpp"
+#include "sandflow/core/error.hpp"
+#include "sandflow/lb/lattice.hpp"
+#include "sandflow/render/colormap.hpp"
+#include "sandflow/render/scene_builder.hpp"
+#include "sandflow/render/text.hpp"
+
+namespace sf::render {
+namespace {
+
+// Relative luminance (sRGB, linearised), for the perceptual-order check.
+double luminance(const Rgb& c) {
+  auto lin = [](int v) {
+    const double x = v / 255.0;
+    return x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4);
+  };
+  return 0.2126 * lin(c.r) + 0.7152 * lin(c.g) + 0.0722 * lin(c.b);
+}
+
+TEST(ColorMap, ViridisEndsAndMiddleAreThePublishedValues) {
+  // matplotlib's _viridis_data entries 0, 255 and the mean of 127 and 128.
+  EXPECT_EQ(mapColor(ColorMap::viridis, 0.0), (Rgb{68, 1, 84}));
+  EXPECT_EQ(mapColor(ColorMap::viridis, 1.0), (Rgb{253, 231, 37}));
+  EXPECT_EQ(mapColor(ColorMap::viridis, 0.5), (Rgb{33, 144, 140}));
+  EXPECT_EQ(mapColor(ColorMap::viridis, -3.0), mapColor(ColorMap::viridis, 0.0));  // clamped
+  EXPECT_EQ(mapColor(ColorMap::viridis, NAN), (Rgb{128, 128, 128}));
+}
+
+TEST(ColorMap, ViridisLightnessRisesMonotonically) {
+  double previous = -1;
+  for (int k = 0; k <= 1000; ++k) {
+    const double l = luminance(mapColor(ColorMap::viridis, k / 1000.0));
+    EXPECT_GE(l, previous - 1e-3) << "at t = " << k / 1000.0;  // 8-bit rounding only
+    previous = l;
+  }
+}
+
+TEST(ColorMap, CoolWarmIsMorelandsDivergingMap) {
+  EXPECT_EQ(mapColor(ColorMap::coolwarm, 0.0), (Rgb{59, 76, 192}));
+  EXPECT_EQ(mapColor(ColorMap::coolwarm, 1.0), (Rgb{180, 4, 38}));
+  EXPECT_EQ(mapColor(ColorMap::coolwarm, 0.5), (Rgb{221, 221, 221}));
+  // Symmetric in lightness about the middle, darker towards both ends.
+  for (double t : {0.1, 0.25, 0.4}) {
+    EXPECT_NEAR(luminance(mapColor(ColorMap::coolwarm, t)),
+                luminance(mapColor(ColorMap::coolwarm, 1 - t)), 0.06);
+    EXPECT_LT(luminance(mapColor(ColorMap::coolwarm, t)),
+              luminance(mapColor(ColorMap::coolwarm, 0.5)));
+  }
+}
+
+TEST(ColorMap, ColoursParseAndPrint) {
+  EXPECT_EQ(parseColor("#ff2000"), (Rgb{255, 32, 0}));
+  EXPECT_EQ(parseColor("#f20"), (Rgb{255, 34, 0}));
+  EXPECT_EQ(formatColor(Rgb{1, 171, 255}), "#01abff");
+  for (const char* bad : {"", "red", "#12345", "#gg0000", "ff0000", "#ff00001"})
+    EXPECT_FALSE(parseColor(bad)) << bad;
+}
+
+TEST(Downsample, AveragesBlocks) {
+  Image big{2, 2, {0, 0, 0, 255, 255, 255, 255, 255, 100, 0, 0, 255, 100, 0, 0, 255}};
+  const Image small = downsample(big, 2);
+  ASSERT_EQ(small.width, 1);
+  ASSERT_EQ(small.height, 1);
+  EXPECT_EQ(small.rgba, (std::vector<std::uint8_t>{114, 64, 64, 255}));
+}
+
+// A fully periodic lattice holding the given velocity field.
+std::unique_ptr<lb::Lattice> latticeWith(int n, const std::function<Vec2(const Vec2&)>& u) {
+  auto lattice = std::make_unique<lb::Lattice>(lb::resolve(test::periodicSquare(1.0, n, 0.01)));
+  lattice->initialize([&](const Vec2& x, double& rho, Vec2& v) {
+    rho = 1.0;
+    v = u(x);
+  });
+  return lattice;
+}
+
+TEST(SampleField, VorticityOfASolidRotationIsTwiceTheRate) {
+  // u = W x (x - c): exact for central differences (linear in x and y).
+  const double w = 0.01;
+  auto lattice = latticeWith(32, [&](const Vec2& x) { return spin(w, x - Vec2(0.5, 0.5)); });
+  const FieldValues f = sampleField(*lattice, Field::vorticity, std::nullopt);
+  // Away from the periodic seams, where the field jumps.
+  for (int j = 2; j < 30; ++j)
+    for (int i = 2; i < 30; ++i) EXPECT_NEAR(f.value[std::size_t(j) * 32 + i], 2 * w, 1e-12);
+  EXPECT_EQ(f.map.map, ColorMap::coolwarm);
+  EXPECT_DOUBLE_EQ(f.map.lo, -f.map.hi);  // symmetric about zero
+}
+
+TEST(SampleField, SpeedPressureAndDensityAreTheLatticesOwn) {
+  auto lattice = latticeWith(16, [](const Vec2& x) { return Vec2(0.01 * x.y(), 0.0); });
+  const FieldValues speed = sampleField(*lattice, Field::velocity, std::nullopt);
+  const FieldValues pressure = sampleField(*lattice, Field::pressure, std::array{-1.0, 2.0});
+  const double cs2 = std::pow(lattice->params().soundSpeed(), 2);
+  for (int j = 0; j < 16; ++j)
+    for (int i = 0; i < 16; ++i) {
+      const std::size_t k = std::size_t(j) * 16 + i;
+      EXPECT_DOUBLE_EQ(speed.value[k], lattice->velocity(i, j).norm());
+      EXPECT_DOUBLE_EQ(pressure.value[k], lattice->pressure(i, j) - cs2);
+    }
+  EXPECT_EQ(speed.map.lo, 0.0);
+  EXPECT_NEAR(speed.map.hi, 0.01 * lattice->position(0, 15).y(), 1e-15);
+  EXPECT_EQ(pressure.map.lo, -1.0);  // a given range is kept
+  EXPECT_EQ(pressure.map.hi, 2.0);
+}
+
+TEST(SceneBuilder, ElementsLandWhereTheMappingSays) {
+  sim::Manager m;
+  m.createLattice(test::periodicSquare(1.0, 20, 0.01));
+  const int mat = test::softMaterial(m, 1000);
+  test::addDisc(m, mat, Vec2(0.3, 0.6), 0.1);
+  ViewOptions v;
+  v.width = 300;
+  v.height = 200;
+  const DrawList list = buildScene(m, v, 2);
+  EXPECT_EQ(list.width, 600);
+  EXPECT_EQ(list.height, 400);
+  ASSERT_TRUE(list.hasField);
+  EXPECT_EQ(list.field.width, 20);
+  EXPECT_EQ(list.field.height, 20);
+  ASSERT_EQ(list.fills.size(), 1u);
+  // The fill's centre, in the supersampled buffer, is twice the picture's
+  // pixel (y flipped: the list is bottom-up, the picture top-down).
+  const auto p = worldToImage(m, v, 0.3, 0.6);
+  EXPECT_NEAR(list.fills[0].centre.x, 2 * p[0], 1e-3);
+  EXPECT_NEAR(list.fills[0].centre.y, 400 - 2 * p[1], 1e-3);
+  // The outline is a circle of the disc's radius in pixels.
+  const double r = std::hypot(list.fills[0].outline[0].x - list.fills[0].centre.x,
+                              list.fills[0].outline[0].y - list.fills[0].centre.y);
+  const double perUnit = (list.field.x1 - list.field.x0);  // the lattice is 1 wide
+  EXPECT_NEAR(r, 0.1 * perUnit, 1e-3);
+  // The world window keeps its aspect: the lattice is square on the screen.
+  EXPECT_NEAR(list.field.x1 - list.field.x0, list.field.y1 - list.field.y0, 1e-3);
+}
+
+TEST(SceneBuilder, ArrowsFollowTheFlow) {
+  sim::Manager m;
+  m.createLattice(test::periodicSquare(1.0, 40, 0.01));
+  m.lattice().initialize([](const Vec2&, double& rho, Vec2& u) {
+    rho = 1;
+    u = Vec2(0.0, -0.02);
+  });
+  ViewOptions v;
+  v.vectors = true;
+  const DrawList list = buildScene(m, v, 1);
+  ASSERT_FALSE(list.fieldStrokes.empty());
+  // Shafts (the first of each three strokes) point down, all the same length.
+  const Stroke& first = list.fieldStrokes[0];
+  for (std::size_t k = 0; k < list.fieldStrokes.size(); k += 3) {
+    const Stroke& s = list.fieldStrokes[k];
+    EXPECT_NEAR(s.b.x - s.a.x, 0.0, 1e-3);
+    EXPECT_LT(s.b.y, s.a.y);
+    EXPECT_NEAR(s.a.y - s.b.y, first.a.y - first.b.y, 1e-3);
+  }
+}
+
+TEST(SceneBuilder, RefusesWhatShowsNothing) {
+  sim::Manager m;
+  ViewOptions v;
+  v.field = Field::velocity;
+  EXPECT_THROW(checkView(m, v), Error);  // no lattice
+  m.createLattice(test::periodicSquare(1.0, 10, 0.01));
+  v.region = std::array{2.0, 2.0, 3.0, 3.0};
+  EXPECT_THROW(checkView(m, v), Error);
+  v.region = std::array{0.5, 0.5, 3.0, 3.0};  // partly over the lattice: fine
+  EXPECT_NO_THROW(checkView(m, v));
+  v.width = 0;
+  EXPECT_THROW(checkOptions(v), Error);
+}
+
+TEST(Text, LabelsHaveInkAndWidth) {
+  TextRenderer& text = sharedTextRenderer();
+  EXPECT_GT(text.width("0.192", 13), 20.0f);
+  EXPECT_LT(text.width("0.192", 13), 50.0f);
+  const Sprite s = text.render("speed |u|", 26, Rgba{0, 0, 0, 255}, 10, 10);
+  int inked = 0;
+  for (std::size_t k = 3; k < s.rgba.size(); k += 4) inked += s.rgba[k] > 128;
+  EXPECT_GT(inked, 100);
+  EXPECT_FLOAT_EQ(s.x1 - s.x0, float(s.width));
+}
+
+}  // namespace
+}  // namespace sf::render
