@@ -112,8 +112,8 @@ void addElements(const sim::Manager& m, const ViewOptions& v, const ElementColou
     if (shape.type() == dem::ShapeType::wall) {
       const auto& wall = static_cast<const dem::Wall&>(shape);
       const auto [p, q] = wall.ends(b.x[k], b.angle[k]);
-      const float width = std::max(2.0f * scale, world.length(wall.thickness()));
-      list.worldStrokes.push_back({world(p), world(q), width, kWall});
+      // A wall acts along its line (its thickness only sets its mass): drawn as a line.
+      list.worldStrokes.push_back({world(p), world(q), 2.5f * scale, kWall});
       continue;
     }
     Rgb fill;
@@ -142,7 +142,7 @@ void addElements(const sim::Manager& m, const ViewOptions& v, const ElementColou
     addOutline(f.outline, scale, line, list.worldStrokes);
     if (shape.type() == dem::ShapeType::disc)  // so that rotation shows
       list.worldStrokes.push_back({f.centre, f.outline.front(), scale, line});
-    list.fills.push_back(std::move(f));
+    if (v.fill) list.fills.push_back(std::move(f));
   }
   if (v.bonds) {
     for (const dem::Bond& bond : a.bonds()) {
@@ -151,9 +151,13 @@ void addElements(const sim::Manager& m, const ViewOptions& v, const ElementColou
       list.worldStrokes.push_back(
           {world(b.x[std::size_t(sa)]), world(b.x[std::size_t(sb)]), 2 * scale, kBond});
     }
-    const float r = 4 * scale;
+    // A broken bond is marked between its two elements where they are now
+    // (where it broke may be far behind them).
+    const float r = 3 * scale;
     for (const dem::BondBreak& br : a.breaks()) {
-      const Point c = world(br.at);
+      const int sa = b.slot(br.idA), sb = b.slot(br.idB);
+      if (sa < 0 || sb < 0) continue;
+      const Point c = world(0.5 * (b.x[std::size_t(sa)] + b.x[std::size_t(sb)]));
       list.worldStrokes.push_back({{c.x - r, c.y - r}, {c.x + r, c.y + r}, 1.5f * scale, kBreak});
       list.worldStrokes.push_back({{c.x - r, c.y + r}, {c.x + r, c.y - r}, 1.5f * scale, kBreak});
     }
@@ -171,7 +175,7 @@ void addElements(const sim::Manager& m, const ViewOptions& v, const ElementColou
       const float widest = std::max(2.0f * scale, 0.66f * world.length(smallest));
       for (const dem::Contact& c : a.contacts()) {
         if (!c.touching) continue;
-        const float w = std::max(0.5f * scale, float(c.force.norm() / fmax) * widest);
+        const float w = std::max(1.0f * scale, float(c.force.norm() / fmax) * widest);
         const bool wallA = b.shape[std::size_t(c.a)]->type() == dem::ShapeType::wall;
         const bool wallB = b.shape[std::size_t(c.b)]->type() == dem::ShapeType::wall;
         const Vec2 pa = wallA ? c.point : b.x[std::size_t(c.a)];

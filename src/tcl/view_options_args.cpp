@@ -17,6 +17,7 @@ enum Opt {
   kRange,
   kColorBy,
   kMaterialColors,
+  kFill,
   kBonds,
   kForces,
   kLabel,
@@ -34,6 +35,7 @@ const OptionSpec kOptions[] = {
     {"-range", "{lo hi}", "the colour map's range ({}: the values shown)"},
     {"-colorby", "none|speed|mass|bond", "element fill: material colour, or a colour map"},
     {"-materialcolors", "{name #rrggbb ...}", "fill colours of materials (else a palette)"},
+    {"-fill", "0|1", "elements filled (0: outlines only, the cells under them show)"},
     {"-bonds", "0|1", "intact bonds as lines, breaks as crosses"},
     {"-forces", "0|1", "contact force chains, width proportional to force"},
     {"-label", "0|1", "time and step in the top corner"},
@@ -89,6 +91,8 @@ Tcl_Obj* valueOf(const render::ViewOptions& v, int k, const std::string& offscre
         Tcl_DictObjPut(nullptr, dict, newString(name), newString(render::formatColor(colour)));
       return dict;
     }
+    case kFill:
+      return boolean(v.fill);
     case kBonds:
       return boolean(v.bonds);
     case kForces:
@@ -164,6 +168,8 @@ bool parseViewOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int f
         staged.materialColors = std::move(colours);
         return true;
       }
+      case kFill:
+        return getBool(interp, val, "-fill", staged.fill);
       case kBonds:
         return getBool(interp, val, "-bonds", staged.bonds);
       case kForces:

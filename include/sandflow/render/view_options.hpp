@@ -30,6 +30,7 @@ struct ViewOptions {
   std::optional<std::array<double, 2>> range;
   ColorBy colorBy = ColorBy::none;  // none: each material its own colour
   std::map<std::string, Rgb> materialColors;
+  bool fill = true;     // elements filled (else outlines only: the cells show through)
   bool bonds = true;    // intact bonds as lines, breaks marked
   bool forces = false;  // contact force chains, width proportional to force
   bool label = true;    // time and step in the top corner
