@@ -1,7 +1,7 @@
 # Body-forced channel flow around a fixed square obstacle.
 # Periodic in x, no-slip walls top and bottom. Prints progress and writes
 # ParaView files (.vti) into the output folder it names; at the end it reports
-# the Reynolds number reached.
+# the Reynolds number reached and writes a picture of the final flow (flow.png).
 #
 #   sandflow examples/channel-obstacle.tcl ?-steps N? ?-every K? ?-out DIR?
 
@@ -48,7 +48,10 @@ proc report {} {
 }
 report
 run $steps -every $every report
+# A picture of the final flow (headless: OSMesa or EGL).
+snapshot [file join $out flow.png] -field velocity -vectors 1 -size {1000 560}
 set umax [expr {[dict get [sim info] mach] * [dict get [lattice info] c]}]
 puts [format "peak speed %.4g: Reynolds number on the obstacle's size %.1f" $umax \
     [expr {$umax * 0.2 / [lattice cget -viscosity]}]]
-puts "done: $frame ParaView files in [file normalize $out] (open flow_*.vti as a series)"
+puts "done: $frame ParaView files in [file normalize $out] (open flow_*.vti as a series),"
+puts "and a picture of the final flow: [file normalize [file join $out flow.png]]"
