@@ -289,10 +289,14 @@ std::optional<Vec2> velocityAt(const lb::Lattice& lattice, const std::vector<flo
   return u;
 }
 
+// The largest speed over a grid of at most about 250,000 nodes: the scale of
+// the streamlines' stagnation test, not worth a pass over a large lattice.
 double maxSpeed(const lb::Lattice& lattice) {
+  const double n = double(lattice.nx()) * lattice.ny();
+  const int stride = std::max(1, int(std::ceil(std::sqrt(n / 250000.0))));
   double m = 0;
-  for (int j = 0; j < lattice.ny(); ++j)
-    for (int i = 0; i < lattice.nx(); ++i)
+  for (int j = 0; j < lattice.ny(); j += stride)
+    for (int i = 0; i < lattice.nx(); i += stride)
       if (holdsFluid(lattice.kind(i, j))) m = std::max(m, lattice.velocity(i, j).norm());
   return m;
 }
@@ -301,31 +305,41 @@ double maxSpeed(const lb::Lattice& lattice) {
 
 void addArrows(const lb::Lattice& lattice, const std::vector<float>& eps, const WorldMap& world,
                float spacing, float scale, Rgba colour, std::vector<Stroke>& out) {
-  const double umax = maxSpeed(lattice);
-  if (!(umax > 0)) return;
   const float cell = world.length(lattice.params().h);
   const int stride = std::max(1, int(std::ceil(spacing / cell)));
-  const float longest = 0.9f * float(stride) * cell;
+  // The arrows' nodes and velocities first: the longest arrow drawn is 90% of
+  // the grid spacing.
+  struct Site {
+    Point centre;
+    Vec2 u;
+  };
+  std::vector<Site> sites;
+  double umax = 0;
   for (int j = stride / 2; j < lattice.ny(); j += stride)
     for (int i = stride / 2; i < lattice.nx(); i += stride) {
       if (!holdsFluid(lattice.kind(i, j)) || eps[std::size_t(j) * lattice.nx() + i] > 0.5f)
         continue;
-      const Vec2 u = lattice.velocity(i, j);
-      const double speed = u.norm();
-      if (speed < 1e-3 * umax) continue;
-      const float len = float(speed / umax) * longest;
-      const Vec2 d = u / speed;
-      const Point c = world(lattice.position(i, j));
-      const Point tip{c.x + 0.5f * len * float(d.x()), c.y + 0.5f * len * float(d.y())};
-      const Point tail{c.x - 0.5f * len * float(d.x()), c.y - 0.5f * len * float(d.y())};
-      out.push_back({tail, tip, scale, colour});
-      const float head = std::max(3.0f * scale, 0.3f * len);
-      for (double turn : {2.6, -2.6}) {  // barbs about 150 degrees off the shaft
-        const Vec2 b = rotated(d, turn);
-        out.push_back(
-            {tip, {tip.x + head * float(b.x()), tip.y + head * float(b.y())}, scale, colour});
-      }
+      sites.push_back({world(lattice.position(i, j)), lattice.velocity(i, j)});
+      umax = std::max(umax, sites.back().u.norm());
     }
+  if (!(umax > 0)) return;
+  const float longest = 0.9f * float(stride) * cell;
+  for (const Site& site : sites) {
+    const double speed = site.u.norm();
+    if (speed < 1e-3 * umax) continue;
+    const float len = float(speed / umax) * longest;
+    const Vec2 d = site.u / speed;
+    const Point c = site.centre;
+    const Point tip{c.x + 0.5f * len * float(d.x()), c.y + 0.5f * len * float(d.y())};
+    const Point tail{c.x - 0.5f * len * float(d.x()), c.y - 0.5f * len * float(d.y())};
+    out.push_back({tail, tip, scale, colour});
+    const float head = std::max(3.0f * scale, 0.3f * len);
+    for (double turn : {2.6, -2.6}) {  // barbs about 150 degrees off the shaft
+      const Vec2 b = rotated(d, turn);
+      out.push_back(
+          {tip, {tip.x + head * float(b.x()), tip.y + head * float(b.y())}, scale, colour});
+    }
+  }
 }
 
 void addStreamlines(const lb::Lattice& lattice, const std::vector<float>& eps,
