@@ -1,8 +1,11 @@
 // plot OUT.png CSVFILE ?options?: a PNG line plot of columns of a CSV file
-// (what output csv and record write), drawn by gnuplot (pngcairo).
+// (what output csv and record write), drawn by gnuplot (pngcairo); -series
+// adds columns of other files, -reference lines of a function of x.
 //
 // The data gnuplot plots is what this command read and checked: it goes into
-// the script as a datablock, so gnuplot never opens the CSV file itself. Text
+// the script as one datablock per series, so gnuplot never opens a CSV file
+// itself. A reference reaches gnuplot as numbers formatted here, in an
+// expression this file writes (referenceExpression), never as user text. Text
 // (titles, labels, column names, the output path) goes in single-quoted
 // gnuplot strings, where neither backquotes nor macros are expanded (see
 // gnuplotString). The PNG is written under a temporary
@@ -17,6 +20,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,27 +32,112 @@
 namespace sf::tcl {
 namespace {
 
-enum Opt { oX, oY, oTitle, oXlabel, oYlabel, oLogx, oLogy, oSize, oStyle };
+enum Opt {
+  oX,
+  oY,
+  oY2,
+  oSeries,
+  oReference,
+  oTitle,
+  oXlabel,
+  oYlabel,
+  oY2label,
+  oLogx,
+  oLogy,
+  oXreverse,
+  oXrange,
+  oYrange,
+  oKey,
+  oSize,
+  oStyle
+};
 
 const OptionSpec kPlotOptions[] = {
     {"-x", "COL", "column of the horizontal axis (default time if there is one, else the first)"},
-    {"-y", "COLS", "columns to plot (default all but step and the -x column)"},
+    {"-y", "COLS",
+     "columns to plot (default all but step, the -x and the -y2 columns; none with -series)"},
+    {"-y2", "COLS", "columns to plot against a second vertical axis, on the right"},
+    {"-series", "{YCOL ?-option value ...?}",
+     "one more series, from this file or another (repeatable; -file -x -title -style -dash "
+     "-axis)"},
+    {"-reference", "{constant C | power C X0 P ?-option value ...?}",
+     "a reference line, C or C (x/X0)^P (repeatable; -title -dash -axis)"},
     {"-title", "S", "title above the plot (default none)"},
     {"-xlabel", "S", "label of the horizontal axis (default the -x column)"},
     {"-ylabel", "S", "label of the vertical axis (default the column, when there is one)"},
+    {"-y2label", "S", "label of the right axis (default the column, when there is one)"},
     {"-logx", "0|1", "logarithmic horizontal axis (all its values must be > 0)"},
     {"-logy", "0|1", "logarithmic vertical axis (all plotted values must be > 0)"},
+    {"-xreverse", "0|1", "horizontal axis from right to left"},
+    {"-xrange", "{LO HI}", "range of the horizontal axis, * for automatic (default {* *})"},
+    {"-yrange", "{LO HI}", "range of the vertical axis, * for automatic (default {* *})"},
+    {"-key", "topleft|topright|bottomleft|bottomright|off",
+     "where the key goes, boxed (default top right, none for a single series)"},
     {"-size", "{W H}", "image size in pixels (default {640 480})"},
     {"-style", "lines|points|linespoints", "how each column is drawn (default lines)"},
     {nullptr, nullptr, nullptr}};
 
+// Options of one -series value, after its column.
+enum SeriesOpt { sFile, sX, sTitle, sStyle, sDash, sAxis };
+const OptionSpec kSeriesOptions[] = {
+    {"-file", "CSVFILE", "the CSV file it comes from (default the plot's CSVFILE)"},
+    {"-x", "COL", "its horizontal column (default the one named like the plot's -x column)"},
+    {"-title", "S", "its title in the key (default the column)"},
+    {"-style", "lines|points|linespoints", "how it is drawn (default the plot's -style)"},
+    {"-dash", "solid|dashed|dotted|dashdot", "its line (default solid)"},
+    {"-axis", "y|y2", "the vertical axis it is plotted against (default y)"},
+    {nullptr, nullptr, nullptr}};
+
+// Options of one -reference value, after its numbers.
+enum ReferenceOpt { rTitle, rDash, rAxis };
+const OptionSpec kReferenceOptions[] = {
+    {"-title", "S", "its title in the key (default its formula)"},
+    {"-dash", "solid|dashed|dotted|dashdot", "its line (default dashed)"},
+    {"-axis", "y|y2", "the vertical axis it is drawn against (default y)"},
+    {nullptr, nullptr, nullptr}};
+
 constexpr const char* kStyles[] = {"lines", "points", "linespoints", nullptr};
+constexpr const char* kDashes[] = {"solid", "dashed", "dotted", "dashdot", nullptr};
+constexpr const char* kAxes[] = {"y", "y2", nullptr};
+constexpr const char* kKeys[] = {"topleft",     "topright", "bottomleft",
+                                 "bottomright", "off",      nullptr};
+constexpr const char* kKeyPositions[] = {"top left", "top right", "bottom left", "bottom right"};
+constexpr const char* kReferenceKinds[] = {"constant", "power", nullptr};
+constexpr const char* kReferenceForms[] = {"constant C", "power C X0 P"};
+constexpr int kReferenceNumbers[] = {1, 3};
 constexpr int kMaxPixels = 20000;
 
+// A series as the options give it: a column of a file, against another.
+struct SeriesSpec {
+  std::string y;
+  std::optional<std::string> file, x, title;
+  std::optional<int> style;
+  int dash = 0, axis = 0;
+};
+
+// A function of x drawn as a reference line: only numbers go into gnuplot's
+// expression, formatted here (see referenceExpression).
+struct ReferenceSpec {
+  int kind = 0;  // kReferenceKinds
+  double c = 0, x0 = 1, p = 1;
+  std::string text;  // as given, for messages
+  std::optional<std::string> title;
+  int dash = 1, axis = 0;
+};
+
+// An axis range; an empty bound is automatic.
+struct Range {
+  std::optional<double> lo, hi;
+};
+
 struct PlotOptions {
-  std::optional<std::string> x, title, xlabel, ylabel;
-  std::optional<std::vector<std::string>> y;
-  bool logx = false, logy = false;
+  std::optional<std::string> x, title, xlabel, ylabel, y2label;
+  std::optional<std::vector<std::string>> y, y2;
+  std::vector<SeriesSpec> series;
+  std::vector<ReferenceSpec> references;
+  bool logx = false, logy = false, xreverse = false;
+  Range xrange, yrange;
+  std::optional<int> key;
   int width = 640, height = 480;
   int style = 0;
 };
@@ -104,8 +194,10 @@ Csv readCsv(const std::string& path) {
 }
 
 // The Tcl-style message for a column that is not in the header.
-std::string badColumn(const std::string& name, const std::vector<std::string>& names) {
-  std::string message = "bad column \"" + name + "\": must be ";
+std::string badColumn(const std::string& name, const std::vector<std::string>& names,
+                      const std::string& file = "") {
+  std::string message =
+      "bad column \"" + name + "\"" + (file.empty() ? "" : " in \"" + file + "\"") + ": must be ";
   for (std::size_t k = 0; k < names.size(); ++k) {
     if (k > 0) message += names.size() > 2 ? ", " : " ";
     if (k > 0 && k + 1 == names.size()) message += "or ";
@@ -114,9 +206,13 @@ std::string badColumn(const std::string& name, const std::vector<std::string>& n
   return message;
 }
 
-int columnIndex(const Csv& csv, const std::string& name) {
+// A column's index; `file` is named in the message when it is not the plot's
+// CSVFILE `main`.
+int columnIndex(const Csv& csv, const std::string& name, const std::string& file = "",
+                const std::string& main = "") {
   for (std::size_t k = 0; k < csv.names.size(); ++k)
     if (csv.names[k] == name) return int(k);
+  if (file != main) throw Error("LOOKUP COLUMN", badColumn(name, csv.names, file));
   throw Error("LOOKUP COLUMN", badColumn(name, csv.names));
 }
 
@@ -185,26 +281,54 @@ std::string makeTemporary(const std::string& out) {
   return name;
 }
 
-// Checks the plotted columns and writes them as a gnuplot datablock.
-std::string dataBlock(const Csv& csv, const std::string& path, const std::vector<int>& columns,
-                      const PlotOptions& o) {
-  std::string block = "$data << EOD\n";
+// One series resolved: its file read and its columns found.
+struct Series {
+  const Csv* csv;
+  std::string path;
+  int x, y;
+  std::string title;
+  int style, dash, axis;
+};
+
+// A number as gnuplot reads it: always a real (gnuplot's 1/2 is 0), in parentheses.
+std::string gnuplotNumber(double v) {
+  std::string text = formatNumber(v);
+  if (text.find_first_of(".e") == std::string::npos) text += ".0";
+  return "(" + text + ")";
+}
+
+// The reference's function of x, built from its numbers only.
+std::string referenceExpression(const ReferenceSpec& r) {
+  if (r.kind == 0) return gnuplotNumber(r.c);
+  return gnuplotNumber(r.c) + "*(x/" + gnuplotNumber(r.x0) + ")**" + gnuplotNumber(r.p);
+}
+
+// Its default title: the formula, as a person writes it.
+std::string referenceTitle(const ReferenceSpec& r) {
+  if (r.kind == 0) return formatNumber(r.c);
+  return formatNumber(r.c) + " (x / " + formatNumber(r.x0) + ")^" + formatNumber(r.p);
+}
+
+// Checks a series' columns and writes them as the gnuplot datablock $dK.
+std::string dataBlock(const Series& s, std::size_t k, const PlotOptions& o) {
+  std::string block = "$d" + std::to_string(k) + " << EOD\n";
+  const Csv& csv = *s.csv;
   for (std::size_t r = 0; r < csv.rows.size(); ++r) {
-    for (std::size_t k = 0; k < columns.size(); ++k) {
-      const std::string& text = csv.rows[r][columns[k]];
-      const std::string& name = csv.names[columns[k]];
-      const std::string where =
-          "column \"" + name + "\", line " + std::to_string(csv.lines[r]) + " of \"" + path + "\"";
+    for (int axis = 0; axis < 2; ++axis) {
+      const int column = axis == 0 ? s.x : s.y;
+      const std::string& text = csv.rows[r][column];
+      const std::string where = "column \"" + csv.names[column] + "\", line " +
+                                std::to_string(csv.lines[r]) + " of \"" + s.path + "\"";
       char* end = nullptr;
       const double v = std::strtod(text.c_str(), &end);
       if (text.empty() || *end != '\0' || !std::isfinite(v))
         throw Error("VALUE CSV", "\"" + text + "\" in " + where + " is not a finite number");
-      const bool log = k == 0 ? o.logx : o.logy;
+      const bool log = axis == 0 ? o.logx : o.logy && s.axis == 0;
       if (log && v <= 0)
-        throw Error("VALUE LOG", std::string(k == 0 ? "-logx" : "-logy") +
+        throw Error("VALUE LOG", std::string(axis == 0 ? "-logx" : "-logy") +
                                      " needs values > 0, but " + where + " is " + text +
                                      " (gnuplot would leave it out)");
-      if (k > 0) block += ' ';
+      if (axis > 0) block += ' ';
       block += formatNumber(v);
     }
     block += '\n';
@@ -212,29 +336,77 @@ std::string dataBlock(const Csv& csv, const std::string& path, const std::vector
   return block + "EOD\n";
 }
 
-std::string gnuplotScript(const Csv& csv, const std::string& path, const std::vector<int>& columns,
+std::string rangeText(const Range& r, bool reverse) {
+  auto bound = [](const std::optional<double>& b) { return b ? formatNumber(*b) : "*"; };
+  if (reverse && r.lo && r.hi) return "[" + bound(r.hi) + ":" + bound(r.lo) + "]";
+  return "[" + bound(r.lo) + ":" + bound(r.hi) + "]" + (reverse ? " reverse" : "");
+}
+
+// Filled circle, square, triangles, diamond, then the same open: a series
+// drawn with points can be told apart without colour.
+constexpr int kPointTypes[] = {7, 5, 9, 11, 13, 6, 4, 8, 10, 12};
+// Reference lines are grey, so that they read as guides, not data.
+constexpr const char* kReferenceGreys[] = {"gray40", "gray65", "gray25", "gray80"};
+
+std::string gnuplotScript(const std::vector<Series>& series, const std::string& xname,
                           const PlotOptions& o, const std::string& temporary) {
-  std::string s = "set terminal pngcairo noenhanced size " + std::to_string(o.width) + "," +
+  // Enhanced text for the numbers only (1×10^6 on a log axis): every text item
+  // is noenhanced, so that ^ _ @ { } in titles are drawn as they are.
+  std::string s = "set terminal pngcairo enhanced size " + std::to_string(o.width) + "," +
                   std::to_string(o.height) + "\n";
   s += "set output " + gnuplotString(temporary) + "\n";
-  s += dataBlock(csv, path, columns, o);
-  if (o.title) s += "set title " + gnuplotString(*o.title) + "\n";
-  s += "set xlabel " + gnuplotString(o.xlabel.value_or(csv.names[columns[0]])) + "\n";
+  for (std::size_t k = 0; k < series.size(); ++k) s += dataBlock(series[k], k, o);
+  if (o.title) s += "set title " + gnuplotString(*o.title) + " noenhanced\n";
+  s += "set xlabel " + gnuplotString(o.xlabel.value_or(xname)) + " noenhanced\n";
+  // An axis's default label is its column when only one series uses it.
+  const std::string* only[2] = {nullptr, nullptr};
+  int count[2] = {0, 0};
+  for (const Series& one : series)
+    if (++count[one.axis] == 1) only[one.axis] = &one.csv->names[one.y];
   if (o.ylabel)
-    s += "set ylabel " + gnuplotString(*o.ylabel) + "\n";
-  else if (columns.size() == 2)
-    s += "set ylabel " + gnuplotString(csv.names[columns[1]]) + "\n";
-  if (columns.size() == 2) s += "set key off\n";
+    s += "set ylabel " + gnuplotString(*o.ylabel) + " noenhanced\n";
+  else if (count[0] == 1)
+    s += "set ylabel " + gnuplotString(*only[0]) + " noenhanced\n";
+  bool y2 = count[1] > 0;
+  for (const ReferenceSpec& r : o.references) y2 = y2 || r.axis == 1;
+  if (y2) {
+    s += "set y2tics\nset ytics nomirror\n";
+    if (o.y2label)
+      s += "set y2label " + gnuplotString(*o.y2label) + " noenhanced\n";
+    else if (count[1] == 1)
+      s += "set y2label " + gnuplotString(*only[1]) + " noenhanced\n";
+  }
+  s += "set key noenhanced\n";
+  if (o.key && *o.key < 4)
+    s += std::string("set key ") + kKeyPositions[*o.key] + " box opaque\n";
+  else if (o.key || series.size() + o.references.size() == 1)
+    s += "set key off\n";
   if (o.logx) s += "set logscale x\n";
   if (o.logy) s += "set logscale y\n";
+  if (o.xreverse || o.xrange.lo || o.xrange.hi)
+    s += "set xrange " + rangeText(o.xrange, o.xreverse) + "\n";
+  if (o.yrange.lo || o.yrange.hi) s += "set yrange " + rangeText(o.yrange, false) + "\n";
   s += "set grid\n";
-  static const char* const styles[] = {"lines lw 1.5", "points pt 7 ps 0.6",
-                                       "linespoints lw 1.5 pt 7 ps 0.6"};
   s += "plot ";
-  for (std::size_t k = 1; k < columns.size(); ++k) {
-    if (k > 1) s += ", \\\n     ";
-    s += "$data using 1:" + std::to_string(k + 1) + " with " + styles[o.style] + " title " +
-         gnuplotString(csv.names[columns[k]]);
+  auto axes = [](int axis) { return axis == 1 ? " axes x1y2" : ""; };
+  auto dash = [](int d) { return " dt " + std::to_string(d + 1); };
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    const Series& one = series[k];
+    if (k > 0) s += ", \\\n     ";
+    // Few points get larger marks: a convergence study has five, a time series hundreds.
+    const std::string mark = " pt " + std::to_string(kPointTypes[k % std::size(kPointTypes)]) +
+                             (one.csv->rows.size() <= 50 ? " ps 1.2" : " ps 0.6");
+    s += "$d" + std::to_string(k) + " using 1:2" + axes(one.axis) + " with ";
+    if (one.style == 0) s += "lines lw 1.5" + dash(one.dash);
+    if (one.style == 1) s += "points" + mark;
+    if (one.style == 2) s += "linespoints lw 1.5" + dash(one.dash) + mark;
+    s += " title " + gnuplotString(one.title) + " noenhanced";
+  }
+  for (std::size_t k = 0; k < o.references.size(); ++k) {
+    const ReferenceSpec& r = o.references[k];
+    s += ", \\\n     " + referenceExpression(r) + axes(r.axis) + " with lines lw 1.5" +
+         dash(r.dash) + " lc rgb '" + kReferenceGreys[k % std::size(kReferenceGreys)] + "' title " +
+         gnuplotString(r.title.value_or(referenceTitle(r))) + " noenhanced";
   }
   return s + "\n";
 }
@@ -253,6 +425,111 @@ bool runGnuplot(Tcl_Interp* interp, const std::string& program, const std::strin
   return code == TCL_OK;
 }
 
+bool getColumns(Tcl_Interp* interp, Tcl_Obj* v, const char* option,
+                std::optional<std::vector<std::string>>& out) {
+  int n = 0;
+  Tcl_Obj** items = nullptr;
+  if (Tcl_ListObjGetElements(interp, v, &n, &items) != TCL_OK) return false;
+  if (n == 0) return reject(interp, "VALUE COLUMNS", std::string(option) + " is empty");
+  out.emplace();
+  for (int i = 0; i < n; ++i) out->push_back(Tcl_GetString(items[i]));
+  return true;
+}
+
+// -series {YCOL ?-option value ...?}
+bool parseSeries(Tcl_Interp* interp, Tcl_Obj* v, SeriesSpec& spec) {
+  int n = 0;
+  Tcl_Obj** items = nullptr;
+  if (Tcl_ListObjGetElements(interp, v, &n, &items) != TCL_OK) return false;
+  if (n == 0)
+    return reject(interp, "VALUE SERIES",
+                  "-series must be {YCOL ?-option value ...?}, got \"" +
+                      std::string(Tcl_GetString(v)) + "\"");
+  spec.y = Tcl_GetString(items[0]);
+  return parseOptions(interp, n, items, 1, kSeriesOptions, [&](int k, Tcl_Obj* value) {
+    int index = 0;
+    switch (k) {
+      case sFile:
+        spec.file = Tcl_GetString(value);
+        if (spec.file->empty()) return reject(interp, "VALUE FILE", "-file must not be empty");
+        return true;
+      case sX:
+        spec.x = Tcl_GetString(value);
+        return true;
+      case sTitle:
+        spec.title = Tcl_GetString(value);
+        return true;
+      case sStyle:
+        if (!getChoice(interp, value, "style", kStyles, index)) return false;
+        spec.style = index;
+        return true;
+      case sDash:
+        return getChoice(interp, value, "dash", kDashes, spec.dash);
+      case sAxis:
+        return getChoice(interp, value, "axis", kAxes, spec.axis);
+    }
+    return false;
+  });
+}
+
+// -reference {constant C ?-option value ...?} or {power C X0 P ?-option value ...?}
+bool parseReference(Tcl_Interp* interp, Tcl_Obj* v, ReferenceSpec& spec) {
+  int n = 0;
+  Tcl_Obj** items = nullptr;
+  if (Tcl_ListObjGetElements(interp, v, &n, &items) != TCL_OK) return false;
+  spec.text = Tcl_GetString(v);
+  const std::string forms =
+      "-reference must be {constant C ?-option value ...?} or {power C X0 "
+      "P ?-option value ...?}, got \"" +
+      spec.text + "\"";
+  if (n == 0) return reject(interp, "VALUE REFERENCE", forms);
+  if (!getChoice(interp, items[0], "reference", kReferenceKinds, spec.kind)) return false;
+  const int numbers = kReferenceNumbers[spec.kind];
+  if (n < 1 + numbers) return reject(interp, "VALUE REFERENCE", forms);
+  double* slots[] = {&spec.c, &spec.x0, &spec.p};
+  for (int i = 0; i < numbers; ++i)
+    if (!getDouble(interp, items[1 + i], "-reference", *slots[i])) return false;
+  if (spec.kind == 1 && spec.x0 <= 0)
+    return reject(interp, "VALUE REFERENCE",
+                  "-reference " + std::string(kReferenceForms[1]) + " needs X0 > 0, got \"" +
+                      spec.text + "\"");
+  return parseOptions(interp, n, items, 1 + numbers, kReferenceOptions, [&](int k, Tcl_Obj* value) {
+    switch (k) {
+      case rTitle:
+        spec.title = Tcl_GetString(value);
+        return true;
+      case rDash:
+        return getChoice(interp, value, "dash", kDashes, spec.dash);
+      case rAxis:
+        return getChoice(interp, value, "axis", kAxes, spec.axis);
+    }
+    return false;
+  });
+}
+
+// -xrange / -yrange {LO HI}: numbers or *, LO below HI.
+bool parseRange(Tcl_Interp* interp, Tcl_Obj* v, const char* option, Range& range) {
+  int n = 0;
+  Tcl_Obj** items = nullptr;
+  const std::string bad = std::string(option) + " must be {LO HI}, each a number or *, got \"" +
+                          Tcl_GetString(v) + "\"";
+  if (Tcl_ListObjGetElements(nullptr, v, &n, &items) != TCL_OK || n != 2)
+    return reject(interp, "VALUE RANGE", bad);
+  Range r;
+  for (int i = 0; i < 2; ++i) {
+    if (std::strcmp(Tcl_GetString(items[i]), "*") == 0) continue;
+    double b = 0;
+    if (Tcl_GetDoubleFromObj(nullptr, items[i], &b) != TCL_OK || !std::isfinite(b))
+      return reject(interp, "VALUE RANGE", bad);
+    (i == 0 ? r.lo : r.hi) = b;
+  }
+  if (r.lo && r.hi && !(*r.lo < *r.hi))
+    return reject(interp, "VALUE RANGE",
+                  std::string(option) + " needs LO < HI, got \"" + Tcl_GetString(v) + "\"");
+  range = r;
+  return true;
+}
+
 bool parsePlotOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], PlotOptions& o) {
   return parseOptions(interp, objc, objv, 3, kPlotOptions, [&](int k, Tcl_Obj* v) {
     switch (k) {
@@ -268,19 +545,33 @@ bool parsePlotOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], PlotO
       case oYlabel:
         o.ylabel = Tcl_GetString(v);
         return true;
+      case oY2label:
+        o.y2label = Tcl_GetString(v);
+        return true;
       case oLogx:
         return getBool(interp, v, "-logx", o.logx);
       case oLogy:
         return getBool(interp, v, "-logy", o.logy);
+      case oXreverse:
+        return getBool(interp, v, "-xreverse", o.xreverse);
       case oStyle:
         return getChoice(interp, v, "style", kStyles, o.style);
-      case oY: {
-        int n = 0;
-        Tcl_Obj** items = nullptr;
-        if (Tcl_ListObjGetElements(interp, v, &n, &items) != TCL_OK) return false;
-        if (n == 0) return reject(interp, "VALUE COLUMNS", "-y is empty");
-        o.y.emplace();
-        for (int i = 0; i < n; ++i) o.y->push_back(Tcl_GetString(items[i]));
+      case oY:
+        return getColumns(interp, v, "-y", o.y);
+      case oY2:
+        return getColumns(interp, v, "-y2", o.y2);
+      case oSeries:
+        return parseSeries(interp, v, o.series.emplace_back());
+      case oReference:
+        return parseReference(interp, v, o.references.emplace_back());
+      case oXrange:
+        return parseRange(interp, v, "-xrange", o.xrange);
+      case oYrange:
+        return parseRange(interp, v, "-yrange", o.yrange);
+      case oKey: {
+        int index = 0;
+        if (!getChoice(interp, v, "key", kKeys, index)) return false;
+        o.key = index;
         return true;
       }
       case oSize: {
@@ -304,6 +595,31 @@ bool parsePlotOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], PlotO
   });
 }
 
+// What a log axis refuses before any file is read: a range or a reference
+// that reaches 0 or below.
+int checkLogAxes(Tcl_Interp* interp, const PlotOptions& o) {
+  const struct {
+    bool log;
+    const Range& range;
+    const char *name, *option;
+  } axes[] = {{o.logx, o.xrange, "-logx", "-xrange"}, {o.logy, o.yrange, "-logy", "-yrange"}};
+  for (const auto& a : axes) {
+    if (!a.log) continue;
+    for (const std::optional<double>& b : {a.range.lo, a.range.hi})
+      if (b && *b <= 0)
+        return fail(interp, "VALUE LOG",
+                    std::string(a.name) + " needs values > 0, but " + a.option + " reaches " +
+                        formatNumber(*b));
+  }
+  if (o.logy)
+    for (const ReferenceSpec& r : o.references)
+      if (r.axis == 0 && r.c <= 0)
+        return fail(
+            interp, "VALUE LOG",
+            "-logy needs values > 0, but reference \"" + r.text + "\" is not (its C must be > 0)");
+  return TCL_OK;
+}
+
 int Plot(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc < 3) {
     Tcl_WrongNumArgs(interp, 1, objv, "OUT.png CSVFILE ?-option value ...?");
@@ -314,6 +630,7 @@ int Plot(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (out.empty()) return fail(interp, "VALUE FILE", "OUT.png must not be empty");
   PlotOptions o;
   if (!parsePlotOptions(interp, objc, objv, o)) return TCL_ERROR;
+  if (checkLogAxes(interp, o) != TCL_OK) return TCL_ERROR;
   const std::string program = findProgram("gnuplot");
   if (program.empty())
     return fail(interp, "RESOURCE GNUPLOT",
@@ -321,23 +638,46 @@ int Plot(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
                 "gnuplot-nox)");
   return guarded(interp, [&] {
     // Rows being recorded are in the file already: recorders flush each row.
-    const Csv csv = readCsv(path);
-    std::vector<int> columns;  // x first, then the y columns
+    // Each file is read once, however many series it gives.
+    std::map<std::string, Csv> files;
+    files.emplace(path, readCsv(path));
+    const Csv& csv = files.at(path);
     const bool hasTime = std::find(csv.names.begin(), csv.names.end(), "time") != csv.names.end();
-    columns.push_back(columnIndex(csv, o.x.value_or(hasTime ? "time" : csv.names[0])));
+    const int x = columnIndex(csv, o.x.value_or(hasTime ? "time" : csv.names[0]));
+    std::vector<Series> series;
+    auto add = [&](const Csv& from, const std::string& file, int xcol, int ycol,
+                   const std::optional<std::string>& title, std::optional<int> style, int dash,
+                   int axis) {
+      series.push_back({&from, file, xcol, ycol, title.value_or(from.names[ycol]),
+                        style.value_or(o.style), dash, axis});
+    };
+    std::vector<int> y2;
+    if (o.y2)
+      for (const std::string& name : *o.y2) y2.push_back(columnIndex(csv, name));
     if (o.y) {
-      for (const std::string& name : *o.y) columns.push_back(columnIndex(csv, name));
-    } else {
+      for (const std::string& name : *o.y) add(csv, path, x, columnIndex(csv, name), {}, {}, 0, 0);
+    } else if (o.series.empty()) {
       for (int k = 0; k < int(csv.names.size()); ++k)
-        if (k != columns[0] && csv.names[k] != "step") columns.push_back(k);
-      if (columns.size() == 1)
-        throw Error("VALUE COLUMNS", "\"" + path + "\" has no column to plot against \"" +
-                                         csv.names[columns[0]] + "\"");
+        if (k != x && csv.names[k] != "step" && std::find(y2.begin(), y2.end(), k) == y2.end())
+          add(csv, path, x, k, {}, {}, 0, 0);
+    }
+    for (int k : y2) add(csv, path, x, k, {}, {}, 0, 1);
+    if (series.empty() && o.series.empty())
+      throw Error("VALUE COLUMNS",
+                  "\"" + path + "\" has no column to plot against \"" + csv.names[x] + "\"");
+    for (const SeriesSpec& spec : o.series) {
+      const std::string file = spec.file.value_or(path);
+      auto found = files.find(file);
+      if (found == files.end()) found = files.emplace(file, readCsv(file)).first;
+      const Csv& from = found->second;
+      const int xcol = columnIndex(from, spec.x.value_or(csv.names[x]), file, path);
+      const int ycol = columnIndex(from, spec.y, file, path);
+      add(from, file, xcol, ycol, spec.title, spec.style, spec.dash, spec.axis);
     }
     const std::string temporary = makeTemporary(out);
     std::string messages;
     try {
-      const std::string script = gnuplotScript(csv, path, columns, o, temporary);
+      const std::string script = gnuplotScript(series, csv.names[x], o, temporary);
       if (!runGnuplot(interp, program, script, messages))
         throw Error("IO GNUPLOT", "gnuplot failed: " + trim(messages));
       struct stat st;
