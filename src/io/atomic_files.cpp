@@ -23,7 +23,13 @@ void writeAtomically(const std::vector<FileContent>& files) {
       throw Error("IO OPEN", "cannot write \"" + f.path + "\": " + std::strerror(error));
     }
     parts.push_back(part);
-    f.write(out);
+    try {
+      f.write(out);
+    } catch (...) {  // a writer that fails leaves no part file either
+      out.close();
+      discard();
+      throw;
+    }
     if (!out.flush()) {
       discard();
       throw Error("IO WRITE", "writing \"" + f.path + "\" failed (disk full?)");

@@ -192,6 +192,24 @@ Vec2 Lattice::velocity(int i, int j) const {
   return latticeVelocity(x) * p_.latticeSpeed();
 }
 
+void Lattice::rowFields(int j, double* rho, Vec2* u) const {
+  const double back = p_.def.forceScheme == ForceScheme::guo ? 0.5 : 1.0;
+  const Vec2 F(p_.forceToLattice(p_.def.forcing.x()), p_.forceToLattice(p_.def.forcing.y()));
+  const std::int64_t first = index(0, j);
+  for (int i = 0; i < p_.nx; ++i) {
+    const std::int64_t x = first + i;
+    if (!holdsFluid(x)) {
+      rho[i] = p_.def.density;
+      u[i] = Vec2::Zero();
+      continue;
+    }
+    double r, jx, jy;
+    moments(f_, x, r, jx, jy);
+    rho[i] = r;
+    u[i] = (Vec2(jx, jy) - back * F) / r * p_.latticeSpeed();
+  }
+}
+
 double Lattice::pressure(int i, int j) const {
   const double cs = p_.soundSpeed();
   return cs * cs * density(i, j);

@@ -45,7 +45,7 @@ int hexDigit(char c) {
 }  // namespace
 
 Rgb mapColor(ColorMap map, double t) {
-  if (std::isnan(t)) return {128, 128, 128};
+  if (std::isnan(t)) return {255, 0, 255};  // magenta: never a value of either map
   t = std::clamp(t, 0.0, 1.0);
   return map == ColorMap::viridis ? viridisAt(t) : coolwarmAt(t);
 }

@@ -25,7 +25,7 @@ std::vector<Vec2> worldOutline(const dem::Shape& shape, const Vec2& x, double an
     case dem::ShapeType::disc: {
       const double r = static_cast<const dem::Disc&>(shape).radius();
       // About 3 pixels per side, 24 sides at least.
-      const int n = std::clamp(int(2 * std::numbers::pi * world.length(r) / 3), 24, 360);
+      const int n = int(std::clamp(2 * std::numbers::pi * world.length(r) / 3, 24.0, 360.0));
       std::vector<Vec2> pts(std::size_t(n), Vec2::Zero());
       for (int k = 0; k < n; ++k) {
         const double t = angle + 2 * std::numbers::pi * k / n;
@@ -163,23 +163,34 @@ void addElements(const sim::Manager& m, const ViewOptions& v, const ElementColou
     }
   }
   if (v.forces) {
+    // Slots through the ids: after "element delete" the contact list keeps the
+    // old slots until the next step's pair search.
+    struct Chain {
+      int a, b;
+      const dem::Contact* c;
+    };
+    std::vector<Chain> chains;
     double fmax = 0;
-    for (const dem::Contact& c : a.contacts())
-      if (c.touching) fmax = std::max(fmax, c.force.norm());
-    if (fmax > 0) {
-      // The strongest chain is as wide as a third of the smallest grain drawn.
+    for (const dem::Contact& c : a.contacts()) {
+      const int sa = b.slot(c.idA), sb = b.slot(c.idB);
+      if (!c.touching || sa < 0 || sb < 0) continue;
+      chains.push_back({sa, sb, &c});
+      fmax = std::max(fmax, c.force.norm());
+    }
+    if (fmax > 0 && std::isfinite(fmax)) {
+      // The strongest chain is as wide as two thirds of the smallest grain's radius.
       double smallest = 1e300;
       for (int s = 0; s < b.size(); ++s)
         if (b.shape[std::size_t(s)]->type() != dem::ShapeType::wall)
           smallest = std::min(smallest, b.shape[std::size_t(s)]->contactSize());
-      const float widest = std::max(2.0f * scale, 0.66f * world.length(smallest));
-      for (const dem::Contact& c : a.contacts()) {
-        if (!c.touching) continue;
-        const float w = std::max(1.0f * scale, float(c.force.norm() / fmax) * widest);
-        const bool wallA = b.shape[std::size_t(c.a)]->type() == dem::ShapeType::wall;
-        const bool wallB = b.shape[std::size_t(c.b)]->type() == dem::ShapeType::wall;
-        const Vec2 pa = wallA ? c.point : b.x[std::size_t(c.a)];
-        const Vec2 pb = wallB ? c.point : b.x[std::size_t(c.b)];
+      const float widest =
+          float(std::clamp(0.66 * world.length(smallest), 2.0 * scale, 200.0 * scale));
+      for (const Chain& ch : chains) {
+        const float w = std::max(1.0f * scale, float(ch.c->force.norm() / fmax) * widest);
+        const bool wallA = b.shape[std::size_t(ch.a)]->type() == dem::ShapeType::wall;
+        const bool wallB = b.shape[std::size_t(ch.b)]->type() == dem::ShapeType::wall;
+        const Vec2 pa = wallA ? ch.c->point : b.x[std::size_t(ch.a)];
+        const Vec2 pb = wallB ? ch.c->point : b.x[std::size_t(ch.b)];
         list.worldStrokes.push_back({world(pa), world(pb), w, kForce});
       }
     }

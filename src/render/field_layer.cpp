@@ -81,33 +81,41 @@ FieldValues sampleField(const lb::Lattice& lattice, Field field,
   if (field == Field::vorticity) u.assign(n, Vec2::Zero());
   const double p0 =
       lattice.params().soundSpeed() * lattice.params().soundSpeed() * lattice.params().def.density;
-#pragma omp parallel for schedule(static)
-  for (int j = 0; j < f.ny; ++j)
-    for (int i = 0; i < f.nx; ++i) {
-      const std::size_t k = std::size_t(j) * f.nx + i;
-      f.fluid[k] = holdsFluid(lattice.kind(i, j));
-      if (field == Field::solid) {
-        f.value[k] = f.fluid[k] ? eps[k] : 1.0;
-        continue;
-      }
-      if (!f.fluid[k]) continue;
-      switch (field) {
-        case Field::density:
-          f.value[k] = lattice.density(i, j);
-          break;
-        case Field::pressure:
-          f.value[k] = lattice.pressure(i, j) - p0;
-          break;
-        case Field::velocity:
-          f.value[k] = lattice.velocity(i, j).norm();
-          break;
-        case Field::vorticity:
-          u[k] = lattice.velocity(i, j);
-          break;
-        default:
-          f.value[k] = nan;
+  const double cs2 = lattice.params().soundSpeed() * lattice.params().soundSpeed();
+#pragma omp parallel
+  {
+    std::vector<double> rho(std::size_t(f.nx));
+    std::vector<Vec2> vel(std::size_t(f.nx));
+#pragma omp for schedule(static)
+    for (int j = 0; j < f.ny; ++j) {
+      if (field != Field::solid) lattice.rowFields(j, rho.data(), vel.data());
+      for (int i = 0; i < f.nx; ++i) {
+        const std::size_t k = std::size_t(j) * f.nx + i;
+        f.fluid[k] = holdsFluid(lattice.kind(i, j));
+        if (field == Field::solid) {
+          f.value[k] = f.fluid[k] ? eps[k] : 1.0;
+          continue;
+        }
+        if (!f.fluid[k]) continue;
+        switch (field) {
+          case Field::density:
+            f.value[k] = rho[std::size_t(i)];
+            break;
+          case Field::pressure:  // as Lattice::pressure, less the reference
+            f.value[k] = cs2 * rho[std::size_t(i)] - p0;
+            break;
+          case Field::velocity:
+            f.value[k] = vel[std::size_t(i)].norm();
+            break;
+          case Field::vorticity:
+            u[k] = vel[std::size_t(i)];
+            break;
+          default:
+            f.value[k] = nan;
+        }
       }
     }
+  }
   if (field == Field::vorticity) {
     const auto& sides = lattice.params().def.sides;
     const Gradient grad{lattice,
@@ -199,6 +207,12 @@ std::vector<float> solidRatios(const lb::Lattice& lattice) {
   return eps;
 }
 
+Window latticeWindow(const lb::Lattice& lattice) {
+  const auto& p = lattice.params();
+  return {p.def.origin.x(), p.def.origin.y(), p.def.origin.x() + p.nx * p.h,
+          p.def.origin.y() + p.ny * p.h};
+}
+
 Key nodeKindKey(const lb::Lattice& lattice, const std::vector<float>& eps) {
   static const char* names[] = {"fluid",         "no-slip wall",  "slip wall", "solid",
                                 "velocity edge", "pressure edge", "open"};
@@ -232,7 +246,7 @@ Sprite fieldSprite(const lb::Lattice& lattice, const std::vector<float>& eps, Fi
   auto colourOf = [&](double v) {
     const double t = values->map.position(v);
     if (std::isnan(t)) return nanColour;
-    return table[std::size_t(std::clamp(int(t * kTable), 0, kTable - 1))];
+    return table[std::size_t(std::clamp(t * kTable, 0.0, kTable - 1.0))];
   };
   Sprite s;
   s.width = lattice.nx();
@@ -304,9 +318,25 @@ double maxSpeed(const lb::Lattice& lattice) {
 }  // namespace
 
 void addArrows(const lb::Lattice& lattice, const std::vector<float>& eps, const WorldMap& world,
-               float spacing, float scale, Rgba colour, std::vector<Stroke>& out) {
-  const float cell = world.length(lattice.params().h);
-  const int stride = std::max(1, int(std::ceil(spacing / cell)));
+               const Window& shown, float spacing, float scale, Rgba colour,
+               std::vector<Stroke>& out) {
+  const auto& p = lattice.params();
+  const float cell = world.length(p.h);
+  const int stride = int(std::clamp(std::ceil(double(spacing) / cell), 1.0, 1e6));
+  // The nodes in view, on the grid of the whole lattice (arrows stay put as
+  // the window moves).
+  const Window w = shown.intersect(latticeWindow(lattice));
+  if (w.empty()) return;
+  auto first = [&](double from, double origin, int n) {
+    const double k = std::clamp(std::floor((from - origin) / p.h), 0.0, double(n));
+    const int start = stride / 2;
+    return start + int(std::ceil((k - start) / stride)) * stride;
+  };
+  auto last = [&](double to, double origin, int n) {
+    return int(std::clamp(std::ceil((to - origin) / p.h), 0.0, double(n)));
+  };
+  const int i0 = first(w.x0, p.def.origin.x(), p.nx), i1 = last(w.x1, p.def.origin.x(), p.nx);
+  const int j0 = first(w.y0, p.def.origin.y(), p.ny), j1 = last(w.y1, p.def.origin.y(), p.ny);
   // The arrows' nodes and velocities first: the longest arrow drawn is 90% of
   // the grid spacing.
   struct Site {
@@ -315,8 +345,8 @@ void addArrows(const lb::Lattice& lattice, const std::vector<float>& eps, const 
   };
   std::vector<Site> sites;
   double umax = 0;
-  for (int j = stride / 2; j < lattice.ny(); j += stride)
-    for (int i = stride / 2; i < lattice.nx(); i += stride) {
+  for (int j = std::max(j0, 0); j < std::min(j1, p.ny); j += stride)
+    for (int i = std::max(i0, 0); i < std::min(i1, p.nx); i += stride) {
       if (!holdsFluid(lattice.kind(i, j)) || eps[std::size_t(j) * lattice.nx() + i] > 0.5f)
         continue;
       sites.push_back({world(lattice.position(i, j)), lattice.velocity(i, j)});
@@ -343,8 +373,8 @@ void addArrows(const lb::Lattice& lattice, const std::vector<float>& eps, const 
 }
 
 void addStreamlines(const lb::Lattice& lattice, const std::vector<float>& eps,
-                    const WorldMap& world, float spacing, float scale, Rgba colour,
-                    std::vector<Stroke>& out) {
+                    const WorldMap& world, const Window& shown, float spacing, float scale,
+                    Rgba colour, std::vector<Stroke>& out) {
   const double umax = maxSpeed(lattice);
   if (!(umax > 0)) return;
   const double h = lattice.params().h;
@@ -353,15 +383,18 @@ void addStreamlines(const lb::Lattice& lattice, const std::vector<float>& eps,
   // empty space. The occupancy grid has cells of half the separation.
   const double separation = 2.0 * spacing / world.pixelsPerUnit;  // world units
   const double cellSize = 0.5 * separation;
-  const auto& p = lattice.params();
-  const int gx = std::max(1, int(std::ceil(p.nx * h / cellSize)));
-  const int gy = std::max(1, int(std::ceil(p.ny * h / cellSize)));
+  // The grid covers the part of the lattice in view (a line ends where it
+  // leaves it): about (viewport / separation)^2 cells whatever the zoom.
+  const Window w = shown.intersect(latticeWindow(lattice));
+  if (w.empty()) return;
+  const int gx = int(std::clamp(std::ceil((w.x1 - w.x0) / cellSize), 1.0, 4096.0));
+  const int gy = int(std::clamp(std::ceil((w.y1 - w.y0) / cellSize), 1.0, 4096.0));
   std::vector<int> owner(std::size_t(gx) * gy, -1);
   auto cellOf = [&](const Vec2& x) -> long {
-    const int i = int((x.x() - p.def.origin.x()) / cellSize);
-    const int j = int((x.y() - p.def.origin.y()) / cellSize);
-    if (i < 0 || j < 0 || i >= gx || j >= gy) return -1;
-    return long(j) * gx + i;
+    const double fi = std::floor((x.x() - w.x0) / cellSize);
+    const double fj = std::floor((x.y() - w.y0) / cellSize);
+    if (!(fi >= 0 && fj >= 0 && fi < gx && fj < gy)) return -1;
+    return long(fj) * gx + long(fi);
   };
   // Free if no other line holds this cell or its neighbours.
   auto free = [&](const Vec2& x, int line) {
@@ -379,11 +412,12 @@ void addStreamlines(const lb::Lattice& lattice, const std::vector<float>& eps,
   };
   // Steps of half a node, or of 2 pixels where nodes are smaller than that.
   const double ds = std::max(0.5 * h, 2.0 * scale / world.pixelsPerUnit);
-  const int maxSteps = int(2.0 * (p.nx + p.ny) * h / ds) + 1;
+  const int maxSteps =
+      int(std::min(2.0 * ((w.x1 - w.x0) + (w.y1 - w.y0)) / ds + 1, double(1 << 20)));
   int line = 0;
   for (int j = 0; j < gy; ++j)
     for (int i = 0; i < gx; ++i, ++line) {
-      const Vec2 seed = p.def.origin + cellSize * Vec2(i + 0.5, j + 0.5);
+      const Vec2 seed = Vec2(w.x0, w.y0) + cellSize * Vec2(i + 0.5, j + 0.5);
       if (!free(seed, line) || !velocityAt(lattice, eps, seed)) continue;
       for (double direction : {1.0, -1.0}) {
         Vec2 x = seed;

@@ -236,7 +236,7 @@ std::array<double, 4> shownRegion(const sim::Manager& m, const ViewOptions& v) {
 void checkOptions(const ViewOptions& v) {
   if (v.range) {
     const auto [lo, hi] = *v.range;
-    if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi > lo))
+    if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi > lo) || !std::isfinite(hi - lo))
       throw Error("VALUE RANGE", "-range {lo hi} needs finite lo < hi, got {" + formatNumber(lo) +
                                      " " + formatNumber(hi) + "}");
   }
@@ -247,7 +247,7 @@ void checkOptions(const ViewOptions& v) {
   if (v.region) {
     const auto [x0, y0, x1, y1] = *v.region;
     if (!std::isfinite(x0) || !std::isfinite(y0) || !std::isfinite(x1) || !std::isfinite(y1) ||
-        !(x1 > x0) || !(y1 > y0))
+        !(x1 > x0) || !(y1 > y0) || !std::isfinite(x1 - x0) || !std::isfinite(y1 - y0))
       throw Error("VALUE REGION", "-region {x0 y0 x1 y1} needs x0 < x1 and y0 < y1, got {" +
                                       formatNumber(x0) + " " + formatNumber(y0) + " " +
                                       formatNumber(x1) + " " + formatNumber(y1) + "}");
@@ -265,6 +265,14 @@ void checkView(const sim::Manager& m, const ViewOptions& v) {
     Extent scene = latticeExtent(m);
     const Extent el = elementExtent(m);
     if (!el.empty) scene.add(el.x0, el.y0, el.x1, el.y1);
+    const double extent = scene.empty ? 0 : std::max(scene.x1 - scene.x0, scene.y1 - scene.y0);
+    const double window = std::max(x1 - x0, y1 - y0);
+    if (extent > 0 && (window < 1e-6 * extent || window > 1e6 * extent))
+      throw Error("VALUE REGION", "-region {" + formatNumber(x0) + " " + formatNumber(y0) + " " +
+                                      formatNumber(x1) + " " + formatNumber(y1) + "} is " +
+                                      (window < extent ? "smaller" : "larger") +
+                                      " than the scene (" + formatNumber(extent) +
+                                      " across) by more than a factor of 1e6");
     if (!scene.empty && (x1 < scene.x0 || x0 > scene.x1 || y1 < scene.y0 || y0 > scene.y1)) {
       const std::string what =
           m.hasLattice() ? (el.empty ? "the lattice lies" : "the lattice and elements lie")
@@ -306,10 +314,14 @@ DrawList buildScene(const sim::Manager& m, const ViewOptions& v, int scale) {
     // Arrows and streamlines in white over the dark end of viridis, else black.
     const bool dark = field == Field::velocity || field == Field::density;
     const Rgba ink = dark ? Rgba{255, 255, 255, 230} : Rgba{0, 0, 0, 230};
+    const auto r = shownRegion(m, v);
+    const detail::Window shown{r[0], r[1], r[2], r[3]};
     if (v.streamlines)
-      detail::addStreamlines(m.lattice(), eps, world, kArrowSpacing * f, f, ink, list.fieldStrokes);
+      detail::addStreamlines(m.lattice(), eps, world, shown, kArrowSpacing * f, f, ink,
+                             list.fieldStrokes);
     if (v.vectors)
-      detail::addArrows(m.lattice(), eps, world, kArrowSpacing * f, f, ink, list.fieldStrokes);
+      detail::addArrows(m.lattice(), eps, world, shown, kArrowSpacing * f, f, ink,
+                        list.fieldStrokes);
   }
   detail::addElements(m, v, keys.colouring, world, f, list);
 

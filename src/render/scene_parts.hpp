@@ -1,5 +1,6 @@
 #pragma once
 // The pieces buildScene puts together (internal to the render module).
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +20,15 @@ struct WorldMap {
     return {float(px0 + (w.x() - wx0) * pixelsPerUnit), float(py0 + (w.y() - wy0) * pixelsPerUnit)};
   }
   float length(double worldLength) const { return float(worldLength * pixelsPerUnit); }
+};
+
+// A rectangle of the world.
+struct Window {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool empty() const { return !(x1 > x0 && y1 > y0); }
+  Window intersect(const Window& o) const {
+    return {std::max(x0, o.x0), std::max(y0, o.y0), std::min(x1, o.x1), std::min(y1, o.y1)};
+  }
 };
 
 // A colour key beside the view: a continuous bar, or swatches with names.
@@ -43,16 +53,20 @@ inline constexpr Rgb kWallColour{89, 89, 89};  // non-fluid nodes under a scalar
 std::vector<float> solidRatios(const lb::Lattice& lattice);
 Key nodeKindKey(const lb::Lattice& lattice, const std::vector<float>& eps);
 
+Window latticeWindow(const lb::Lattice& lattice);
+
 // The lattice layer: one texel per node.
 Sprite fieldSprite(const lb::Lattice& lattice, const std::vector<float>& eps, Field field,
                    const FieldValues* values, const WorldMap& world);
-// Velocity arrows on a grid about `spacing` pixels apart, and streamlines;
-// neither enters cells more than half covered by a solid.
+// Velocity arrows on a grid about `spacing` pixels apart, and streamlines,
+// over the part of the lattice in the window `shown`; neither enters cells more
+// than half covered by a solid.
 void addArrows(const lb::Lattice& lattice, const std::vector<float>& eps, const WorldMap& world,
-               float spacing, float scale, Rgba colour, std::vector<Stroke>& out);
+               const Window& shown, float spacing, float scale, Rgba colour,
+               std::vector<Stroke>& out);
 void addStreamlines(const lb::Lattice& lattice, const std::vector<float>& eps,
-                    const WorldMap& world, float spacing, float scale, Rgba colour,
-                    std::vector<Stroke>& out);
+                    const WorldMap& world, const Window& shown, float spacing, float scale,
+                    Rgba colour, std::vector<Stroke>& out);
 
 // Elements, bonds, breaks and contact forces. `key` receives the colour key of
 // -colorby (when there is one).

@@ -37,7 +37,7 @@ void CsvRecorder::record(const Session& s) {
   row += "\n";
   const bool first = !file_;
   if (first) {
-    file_ = std::fopen(path().c_str(), "w");
+    file_ = std::fopen(path().c_str(), "we");  // close-on-exec: not for ffmpeg or gnuplot
     if (!file_)
       throw Error("IO OPEN", std::string("cannot open it for writing: ") + std::strerror(errno));
     std::string header = "step,time";

@@ -563,7 +563,11 @@ int ElementInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
   if (!getElement(interp, objv[1], a, s)) return TCL_ERROR;
   const dem::Bodies& b = a.bodies();
   int contacts = 0;
-  for (const dem::Contact& c : a.contacts()) contacts += c.touching && (c.a == s || c.b == s);
+  // By id: after a deletion the list keeps old slots (and the deleted
+  // element's contacts) until the next step's pair search.
+  for (const dem::Contact& c : a.contacts())
+    contacts += c.touching && ((c.idA == b.id[s] && b.slot(c.idB) >= 0) ||
+                               (c.idB == b.id[s] && b.slot(c.idA) >= 0));
   const dem::Shape& shape = *b.shape[s];
   Tcl_Obj* d = newDict({{"id", Tcl_NewIntObj(b.id[s])},
                         {"type", Tcl_NewStringObj(dem::shapeTypeNames[int(shape.type())], -1)},

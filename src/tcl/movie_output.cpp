@@ -80,8 +80,11 @@ class MovieRecorder final : public Recorder {
     if (probe < 0) throw Error("IO MOVIE", "cannot write " + p + ": " + std::strerror(errno));
     close(probe);
     int fds[2];
-    if (pipe(fds) != 0) throw Error("IO MOVIE", std::string("no pipe: ") + std::strerror(errno));
-    fcntl(fds[1], F_SETFD, FD_CLOEXEC);
+    if (pipe2(fds, O_CLOEXEC) != 0) {
+      const int e = errno;
+      std::remove(partial_.c_str());
+      throw Error("IO MOVIE", std::string("no pipe: ") + std::strerror(e));
+    }
     const std::string size = std::to_string(view_.width) + "x" + std::to_string(view_.height);
     const std::string rate = std::to_string(fps_);
     // yuv420p (what players expect) needs even sides: pad by one pixel if odd.
@@ -107,12 +110,14 @@ class MovieRecorder final : public Recorder {
     if (rc != 0) {
       close(fds[1]);
       std::remove(partial_.c_str());
+      std::remove(log_.c_str());
       throw Error("IO MOVIE", "cannot start " + ffmpeg + ": " + std::strerror(rc));
     }
     pipe_ = fds[1];
   }
 
   const char* kind() const override { return "movie"; }
+  void abandon() noexcept override { stop(); }
 
   void record(const Session& s) override {
     const render::Image frame = takePicture(s.manager, view_);

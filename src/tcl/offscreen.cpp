@@ -20,6 +20,9 @@ constexpr int kSupersample = 2;
 std::string choice = "auto";
 const render::OffscreenApi* api = nullptr;
 std::mutex loadMutex;
+// The back end's one context serves one picture at a time (interpreters in
+// several threads each have a session, but share the process's context).
+std::mutex renderMutex;
 
 std::string directoryOf(const std::string& path) {
   const auto slash = path.rfind('/');
@@ -84,7 +87,8 @@ const render::OffscreenApi& backEnd() {
 
 }  // namespace
 
-const std::string& offscreenChoice() {
+std::string offscreenChoice() {
+  std::lock_guard lock(loadMutex);
   return choice;
 }
 
@@ -108,6 +112,7 @@ render::Image takePicture(const sim::Manager& m, const render::ViewOptions& v) {
   const render::OffscreenApi& b = backEnd();
   render::Image big;
   std::string error;
+  std::lock_guard lock(renderMutex);
   if (!b.render(list, big, error)) throw Error("RESOURCE OFFSCREEN", error);
   return render::downsample(big, kSupersample);
 }

@@ -11,16 +11,33 @@ int recorderError(Tcl_Interp* interp, const Recorder& r, const Error& e) {
   return fail(interp, e.code(), std::string(r.kind()) + " output " + r.path() + ": " + e.what());
 }
 
+// A record as an sf::Error whatever went wrong (a frame too large for memory
+// must not escape through Tcl's C frames).
+template <class Body>
+void asError(Body&& body) {
+  try {
+    body();
+  } catch (const Error&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw Error("RESOURCE MEMORY", "out of memory");
+  } catch (const std::exception& e) {
+    throw Error("INTERNAL", e.what());
+  }
+}
+
+void finishQuietly(Recorder& r) {
+  try {
+    asError([&] { r.finish(); });
+  } catch (const Error&) {
+    // Nothing to report to at this point; the file is as complete as it got.
+  }
+}
+
 }  // namespace
 
 Session::~Session() {
-  for (auto& r : recorders) {
-    try {
-      r->finish();
-    } catch (const Error&) {
-      // Nothing to report to at this point; the file is as complete as it got.
-    }
-  }
+  for (auto& r : recorders) finishQuietly(*r);
 }
 
 int recordStep(Session& s) {
@@ -35,14 +52,11 @@ int recordStep(Session& s) {
       continue;
     }
     try {
-      r.record(s);
+      asError([&] { r.record(s); });
       ++k;
     } catch (const Error& e) {
       if (code == TCL_OK) code = recorderError(s.interp, r, e);
-      try {
-        r.finish();
-      } catch (const Error&) {
-      }
+      finishQuietly(r);  // what was recorded so far stays
       s.recorders.erase(s.recorders.begin() + std::ptrdiff_t(k));
     }
   }
@@ -60,7 +74,7 @@ int closeRecorders(Session& s, const std::string* path) {
       continue;
     }
     try {
-      (*it)->finish();
+      asError([&] { (*it)->finish(); });
     } catch (const Error& e) {
       if (code == TCL_OK) code = recorderError(s.interp, **it, e);
     }
@@ -75,13 +89,10 @@ int startRecorder(Session& s, std::unique_ptr<Recorder> recorder) {
     return fail(s.interp, "VALUE OUTPUT",
                 "\"" + recorder->path() + "\" is already being recorded to; output close it first");
   try {
-    recorder->record(s);
+    asError([&] { recorder->record(s); });
   } catch (const Error& e) {
     const int code = recorderError(s.interp, *recorder, e);
-    try {
-      recorder->finish();
-    } catch (const Error&) {
-    }
+    recorder->abandon();  // nothing recorded: no file is left
     return code;
   }
   s.recorders.push_back(std::move(recorder));

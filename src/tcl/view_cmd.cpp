@@ -124,7 +124,14 @@ int Snapshot(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
   if (!parseViewOptions(interp, objc, objv, 2, v, nullptr)) return TCL_ERROR;
   return guarded(interp, [&] {
     const render::Image image = takePicture(s.manager, v);
-    io::writeAtomically({{path, [&](std::ostream& out) { render::writePng(image, out); }}});
+    io::writeAtomically({{path, [&](std::ostream& out) {
+                            try {
+                              render::writePng(image, out);
+                            } catch (const Error& e) {
+                              throw Error(e.code(), "writing \"" + path + "\" failed: " + e.what() +
+                                                        " (disk full?)");
+                            }
+                          }}});
     Tcl_SetObjResult(interp, newString(path));
     return TCL_OK;
   });

@@ -29,7 +29,7 @@ TEST(ColorMap, ViridisEndsAndMiddleAreThePublishedValues) {
   EXPECT_EQ(mapColor(ColorMap::viridis, 1.0), (Rgb{253, 231, 37}));
   EXPECT_EQ(mapColor(ColorMap::viridis, 0.5), (Rgb{33, 144, 140}));
   EXPECT_EQ(mapColor(ColorMap::viridis, -3.0), mapColor(ColorMap::viridis, 0.0));  // clamped
-  EXPECT_EQ(mapColor(ColorMap::viridis, NAN), (Rgb{128, 128, 128}));
+  EXPECT_EQ(mapColor(ColorMap::viridis, NAN), (Rgb{255, 0, 255}));
 }
 
 TEST(ColorMap, ViridisLightnessRisesMonotonically) {
@@ -156,6 +156,41 @@ TEST(SceneBuilder, ArrowsFollowTheFlow) {
     EXPECT_NEAR(s.b.x - s.a.x, 0.0, 1e-3);
     EXPECT_LT(s.b.y, s.a.y);
     EXPECT_NEAR(s.a.y - s.b.y, first.a.y - first.b.y, 1e-3);
+  }
+}
+
+TEST(SceneBuilder, ValuesOutsideAFixedRangeTakeTheNearestEnd) {
+  sim::Manager m;
+  m.createLattice(test::periodicSquare(1.0, 8, 0.01));  // density 1 everywhere
+  ViewOptions v;
+  v.field = Field::density;
+  for (const auto& [range, expected] :
+       {std::pair{std::array{0.0, 1e-6}, Rgb{253, 231, 37}},  // far above: the top colour
+        std::pair{std::array{5.0, 6.0}, Rgb{68, 1, 84}}}) {    // below: the bottom colour
+    v.range = range;
+    const DrawList list = buildScene(m, v, 1);
+    for (std::size_t k = 0; k < list.field.rgba.size(); k += 4)
+      ASSERT_EQ((Rgb{list.field.rgba[k], list.field.rgba[k + 1], list.field.rgba[k + 2]}), expected);
+  }
+}
+
+TEST(SceneBuilder, ArrowsAndStreamlinesStayWithinTheWindow) {
+  sim::Manager m;
+  m.createLattice(test::periodicSquare(1.0, 256, 0.01));
+  m.lattice().initialize([](const Vec2& x, double& rho, Vec2& u) {
+    rho = 1;
+    u = Vec2(0.01 * std::sin(6.283 * x.y()), 0.01 * std::cos(6.283 * x.x()));
+  });
+  ViewOptions v;
+  v.vectors = v.streamlines = true;
+  v.region = std::array{0.4, 0.4, 0.41, 0.41};  // 2.56 nodes across
+  const DrawList list = buildScene(m, v, 1);
+  EXPECT_LE(list.fieldStrokes.size(), 20000u);
+  const Rect& port = list.viewport;
+  const float margin = 0.6f * (port.x1 - port.x0);  // a node and an arrow's reach
+  for (const Stroke& s : list.fieldStrokes) {
+    EXPECT_GT(s.a.x, port.x0 - margin);
+    EXPECT_LT(s.a.x, port.x1 + margin);
   }
 }
 

@@ -112,6 +112,9 @@ class Lattice {
   Vec2 velocity(int i, int j) const;
   double pressure(int i, int j) const;
   Vec2 position(int i, int j) const;
+  // Density and velocity of the nx nodes of row j, exactly as density() and
+  // velocity() give them, in one pass (pictures of large lattices).
+  void rowFields(int j, double* rho, Vec2* u) const;
   // Nearest node to a point, or nullopt outside the lattice.
   std::optional<std::pair<int, int>> nodeAt(const Vec2& x) const;
 

@@ -27,7 +27,7 @@ std::string viewOptionHelp(bool withOffscreen);
 
 // The back end a process uses: "auto" (OSMesa, else EGL), "osmesa" or "egl".
 // It can change only until the first picture loads a module.
-const std::string& offscreenChoice();
+std::string offscreenChoice();
 void setOffscreenChoice(const std::string& choice);  // throws sf::Error once loaded
 std::string loadedOffscreen();                       // "" until a picture is taken
 

@@ -22,6 +22,14 @@ class Recorder {
   virtual ~Recorder() = default;
   virtual void record(const Session& s) = 0;
   virtual void finish() = 0;
+  // Gives up before the first record was taken: removes what was started.
+  // Must not throw.
+  virtual void abandon() noexcept {
+    try {
+      finish();
+    } catch (...) {
+    }
+  }
   virtual const char* kind() const = 0;  // "csv", "movie"
   const std::string& path() const { return path_; }
   int every() const { return every_; }
