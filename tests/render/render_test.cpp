@@ -166,11 +166,12 @@ TEST(SceneBuilder, ValuesOutsideAFixedRangeTakeTheNearestEnd) {
   v.field = Field::density;
   for (const auto& [range, expected] :
        {std::pair{std::array{0.0, 1e-6}, Rgb{253, 231, 37}},  // far above: the top colour
-        std::pair{std::array{5.0, 6.0}, Rgb{68, 1, 84}}}) {    // below: the bottom colour
+        std::pair{std::array{5.0, 6.0}, Rgb{68, 1, 84}}}) {   // below: the bottom colour
     v.range = range;
     const DrawList list = buildScene(m, v, 1);
     for (std::size_t k = 0; k < list.field.rgba.size(); k += 4)
-      ASSERT_EQ((Rgb{list.field.rgba[k], list.field.rgba[k + 1], list.field.rgba[k + 2]}), expected);
+      ASSERT_EQ((Rgb{list.field.rgba[k], list.field.rgba[k + 1], list.field.rgba[k + 2]}),
+                expected);
   }
 }
 
