@@ -6,7 +6,6 @@
 #include <GL/gl.h>
 
 #include <cstdio>
-#include <cstring>
 
 #include "sandflow/render/gl_draw.hpp"
 #include "sandflow/render/offscreen.hpp"
@@ -99,16 +98,10 @@ bool renderEgl(const DrawList& list, Image& out, std::string& error) {
     return false;
   }
   drawList(list);
-  out.width = list.width;
-  out.height = list.height;
   std::vector<std::uint8_t> buffer(std::size_t(list.width) * list.height * 4);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, list.width, list.height, GL_RGBA, GL_UNSIGNED_BYTE, buffer.data());
-  out.rgba.resize(buffer.size());
-  const std::size_t row = std::size_t(list.width) * 4;
-  for (int j = 0; j < list.height; ++j)  // GL rows run bottom-up
-    std::memcpy(out.rgba.data() + std::size_t(j) * row,
-                buffer.data() + std::size_t(list.height - 1 - j) * row, row);
+  imageFromBuffer(buffer, list.width, list.height, out);
   return true;
 }
 

@@ -3,8 +3,6 @@
 // on a buffer of each picture's size.
 #include <GL/osmesa.h>
 
-#include <cstring>
-
 #include "sandflow/render/gl_draw.hpp"
 #include "sandflow/render/offscreen.hpp"
 
@@ -38,14 +36,7 @@ bool renderOsmesa(const DrawList& list, Image& out, std::string& error) {
     return false;
   }
   drawList(list);
-  // OSMesa's rows run bottom-up; the image's top-down.
-  out.width = list.width;
-  out.height = list.height;
-  out.rgba.resize(buffer.size());
-  const std::size_t row = std::size_t(list.width) * 4;
-  for (int j = 0; j < list.height; ++j)
-    std::memcpy(out.rgba.data() + std::size_t(j) * row,
-                buffer.data() + std::size_t(list.height - 1 - j) * row, row);
+  imageFromBuffer(buffer, list.width, list.height, out);
   return true;
 }
 

@@ -59,6 +59,13 @@ bool getDouble(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, double& out) 
   return true;
 }
 
+bool getEvery(Tcl_Interp* interp, Tcl_Obj* obj, int& every) {
+  if (!getInt(interp, obj, "-every", every)) return false;
+  if (every < 1)
+    return reject(interp, "VALUE EVERY", "-every must be >= 1, got " + std::to_string(every));
+  return true;
+}
+
 bool getInt(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, int& out) {
   // Tcl_GetIntFromObj takes 2147483648 to 4294967295 as negative numbers (for
   // unsigned values): refuse what an int cannot hold, in Tcl's words.

@@ -230,11 +230,12 @@ int OutputMovie(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
       continue;
     }
     if (i + 1 >= objc) return fail(interp, "VALUE MISSING", "value for \"" + name + "\" missing");
-    int& target = name == "-every" ? every : fps;
-    if (!getInt(interp, objv[i + 1], name.c_str(), target)) return TCL_ERROR;
-    if (name == "-every" && every < 1)
-      return fail(interp, "VALUE EVERY", "-every must be >= 1, got " + std::to_string(every));
-    if (name == "-fps" && (fps < 1 || fps > 240))
+    if (name == "-every") {
+      if (!getEvery(interp, objv[i + 1], every)) return TCL_ERROR;
+      continue;
+    }
+    if (!getInt(interp, objv[i + 1], "-fps", fps)) return TCL_ERROR;
+    if (fps < 1 || fps > 240)
       return fail(interp, "VALUE FPS", "-fps must be 1 to 240, got " + std::to_string(fps));
   }
   render::ViewOptions view = s.view;

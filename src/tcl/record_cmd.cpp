@@ -131,11 +131,7 @@ int Record(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[])
   bool chosen = false;
   if (!parseOptions(interp, objc, objv, 2, kRecordOptions, [&](int k, Tcl_Obj* o) {
         if (k == 0) {
-          if (!getInt(interp, o, "-every", every)) return false;
-          if (every < 1)
-            return reject(interp, "VALUE EVERY",
-                          "-every must be >= 1, got " + std::to_string(every));
-          return true;
+          return getEvery(interp, o, every);
         }
         int n = 0;
         Tcl_Obj** items = nullptr;

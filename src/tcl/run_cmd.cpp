@@ -40,9 +40,7 @@ int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   Tcl_Obj* script = nullptr;
   if (objc == 5) {
     if (optionIndex(interp, objv[2], kRunOptions) < 0) return TCL_ERROR;
-    if (!getInt(interp, objv[3], "-every", every)) return TCL_ERROR;
-    if (every < 1)
-      return fail(interp, "VALUE EVERY", "-every must be >= 1, got " + std::to_string(every));
+    if (!getEvery(interp, objv[3], every)) return TCL_ERROR;
     script = objv[4];
   }
   double computeSeconds = 0.0;

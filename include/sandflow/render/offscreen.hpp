@@ -3,7 +3,9 @@
 // EGL), each holding the drawing code and its own context. They are loaded with
 // dlopen so that no process links two libraries that both export the gl*
 // functions (design.md); a process loads at most one.
+#include <cstring>
 #include <string>
+#include <vector>
 
 #include "sandflow/render/draw_list.hpp"
 
@@ -18,6 +20,18 @@ struct OffscreenApi {
 };
 
 inline constexpr int kOffscreenApiVersion = 1;
+
+// An OpenGL buffer (rows bottom-up) as an image (rows top-down).
+inline void imageFromBuffer(const std::vector<std::uint8_t>& buffer, int width, int height,
+                            Image& out) {
+  out.width = width;
+  out.height = height;
+  out.rgba.resize(buffer.size());
+  const std::size_t row = std::size_t(width) * 4;
+  for (int j = 0; j < height; ++j)
+    std::memcpy(out.rgba.data() + std::size_t(j) * row,
+                buffer.data() + std::size_t(height - 1 - j) * row, row);
+}
 inline constexpr const char* kOffscreenEntry = "sandflow_offscreen_api";
 
 }  // namespace sf::render

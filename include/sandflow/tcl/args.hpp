@@ -39,6 +39,8 @@ void noteOptionOnce(Tcl_Interp* interp, const char* option);
 bool getDouble(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, double& out);
 bool getInt(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, int& out);
 bool getBool(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, bool& out);
+// The K of "-every K" (run, output csv, output movie, record): an int >= 1.
+bool getEvery(Tcl_Interp* interp, Tcl_Obj* obj, int& every);
 bool getVec2(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, Vec2& out);
 bool getDoubles(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, int count,
                 std::vector<double>& out);
