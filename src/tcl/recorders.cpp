@@ -1,5 +1,6 @@
 // The recorders of a session: called after steps, finished on close, reset and exit.
 #include <algorithm>
+#include <filesystem>
 
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/session.hpp"
@@ -36,6 +37,12 @@ void finishQuietly(Recorder& r) {
 
 }  // namespace
 
+std::string Recorder::samePath(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+  return (error ? std::filesystem::path(path) : absolute).lexically_normal().string();
+}
+
 Session::~Session() {
   for (auto& r : recorders) finishQuietly(*r);
 }
@@ -65,11 +72,11 @@ int recordStep(Session& s) {
 
 int closeRecorders(Session& s, const std::string* path) {
   if (path && std::none_of(s.recorders.begin(), s.recorders.end(),
-                           [&](const auto& r) { return r->path() == *path; }))
+                           [&](const auto& r) { return r->writes(*path); }))
     return fail(s.interp, "LOOKUP OUTPUT", "no output is being recorded to \"" + *path + "\"");
   int code = TCL_OK;
   for (auto it = s.recorders.begin(); it != s.recorders.end();) {
-    if (path && (*it)->path() != *path) {
+    if (path && !(*it)->writes(*path)) {
       ++it;
       continue;
     }
@@ -85,7 +92,7 @@ int closeRecorders(Session& s, const std::string* path) {
 
 int startRecorder(Session& s, std::unique_ptr<Recorder> recorder) {
   if (std::any_of(s.recorders.begin(), s.recorders.end(),
-                  [&](const auto& r) { return r->path() == recorder->path(); }))
+                  [&](const auto& r) { return r->writes(recorder->path()); }))
     return fail(s.interp, "VALUE OUTPUT",
                 "\"" + recorder->path() + "\" is already being recorded to; output close it first");
   try {

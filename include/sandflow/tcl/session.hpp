@@ -18,7 +18,8 @@ struct Session;
 // the file. Both throw sf::Error on failure.
 class Recorder {
  public:
-  Recorder(std::string path, int every) : path_(std::move(path)), every_(every) {}
+  Recorder(std::string path, int every)
+      : path_(std::move(path)), same_(samePath(path_)), every_(every) {}
   virtual ~Recorder() = default;
   virtual void record(const Session& s) = 0;
   virtual void finish() = 0;
@@ -32,6 +33,9 @@ class Recorder {
   }
   virtual const char* kind() const = 0;  // "csv", "movie"
   const std::string& path() const { return path_; }
+  // The path in a form where "a.csv", "./a.csv" and "/abs/a.csv" agree.
+  static std::string samePath(const std::string& path);
+  bool writes(const std::string& path) const { return same_ == samePath(path); }
   int every() const { return every_; }
   long long written() const { return written_; }
 
@@ -39,7 +43,7 @@ class Recorder {
   long long written_ = 0;  // records (rows, frames) so far
 
  private:
-  std::string path_;
+  std::string path_, same_;
   int every_;
 };
 
