@@ -165,12 +165,16 @@ void Lattice::reportInstability(const StepStats& stats, double machLimit) const 
 
 // Pre-collision velocity (lattice units) from the stored post-collision state:
 // collision adds F to the first moment, and Guo's velocity carries F/2 back.
-Vec2 Lattice::latticeVelocity(std::int64_t x) const {
-  double rho, jx, jy;
-  moments(f_, x, rho, jx, jy);
+Vec2 Lattice::velocityFromMoments(double rho, double jx, double jy) const {
   const double back = p_.def.forceScheme == ForceScheme::guo ? 0.5 : 1.0;
   const Vec2 F(p_.forceToLattice(p_.def.forcing.x()), p_.forceToLattice(p_.def.forcing.y()));
   return (Vec2(jx, jy) - back * F) / rho;
+}
+
+Vec2 Lattice::latticeVelocity(std::int64_t x) const {
+  double rho, jx, jy;
+  moments(f_, x, rho, jx, jy);
+  return velocityFromMoments(rho, jx, jy);
 }
 
 bool Lattice::holdsFluid(std::int64_t x) const {
@@ -193,8 +197,6 @@ Vec2 Lattice::velocity(int i, int j) const {
 }
 
 void Lattice::rowFields(int j, double* rho, Vec2* u) const {
-  const double back = p_.def.forceScheme == ForceScheme::guo ? 0.5 : 1.0;
-  const Vec2 F(p_.forceToLattice(p_.def.forcing.x()), p_.forceToLattice(p_.def.forcing.y()));
   const std::int64_t first = index(0, j);
   for (int i = 0; i < p_.nx; ++i) {
     const std::int64_t x = first + i;
@@ -206,7 +208,7 @@ void Lattice::rowFields(int j, double* rho, Vec2* u) const {
     double r, jx, jy;
     moments(f_, x, r, jx, jy);
     rho[i] = r;
-    u[i] = (Vec2(jx, jy) - back * F) / r * p_.latticeSpeed();
+    u[i] = velocityFromMoments(r, jx, jy) * p_.latticeSpeed();
   }
 }
 

@@ -66,6 +66,15 @@ std::array<double, 2> finiteRange(const std::vector<double>& v) {
 
 FieldValues sampleField(const lb::Lattice& lattice, Field field,
                         const std::optional<std::array<double, 2>>& range) {
+  return detail::sampleField(
+      lattice, field == Field::solid ? detail::solidRatios(lattice) : std::vector<float>(), field,
+      range);
+}
+
+namespace detail {
+
+FieldValues sampleField(const lb::Lattice& lattice, const std::vector<float>& eps, Field field,
+                        const std::optional<std::array<double, 2>>& range) {
   if (field == Field::none || field == Field::nodes)
     throw Error("VALUE FIELD", "not a scalar field");
   FieldValues f;
@@ -75,13 +84,10 @@ FieldValues sampleField(const lb::Lattice& lattice, Field field,
   f.value.assign(n, std::numeric_limits<double>::quiet_NaN());
   f.fluid.assign(n, 0);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<float> eps =
-      field == Field::solid ? detail::solidRatios(lattice) : std::vector<float>();
   std::vector<Vec2> u;
   if (field == Field::vorticity) u.assign(n, Vec2::Zero());
-  const double p0 =
-      lattice.params().soundSpeed() * lattice.params().soundSpeed() * lattice.params().def.density;
   const double cs2 = lattice.params().soundSpeed() * lattice.params().soundSpeed();
+  const double p0 = cs2 * lattice.params().def.density;
 #pragma omp parallel
   {
     std::vector<double> rho(std::size_t(f.nx));
@@ -171,8 +177,6 @@ FieldValues sampleField(const lb::Lattice& lattice, Field field,
   }
   return f;
 }
-
-namespace detail {
 
 Rgb nodeKindColour(lb::NodeKind kind) {
   switch (kind) {

@@ -205,7 +205,7 @@ Keys keysFor(const sim::Manager& m, const ViewOptions& v, const std::vector<floa
   if (m.hasLattice() && field == Field::nodes) {
     k.keys.push_back(detail::nodeKindKey(m.lattice(), *eps));
   } else if (m.hasLattice() && field != Field::none) {
-    k.field = sampleField(m.lattice(), field, v.range);
+    k.field = detail::sampleField(m.lattice(), *eps, field, v.range);
     Key key;
     key.title = k.field->title;
     key.map = k.field->map;

@@ -52,6 +52,9 @@ inline constexpr Rgb kWallColour{89, 89, 89};  // non-fluid nodes under a scalar
 // lattice's list of covered cells.
 std::vector<float> solidRatios(const lb::Lattice& lattice);
 Key nodeKindKey(const lb::Lattice& lattice, const std::vector<float>& eps);
+// sampleField with the solid ratios already at hand (needed for Field::solid).
+FieldValues sampleField(const lb::Lattice& lattice, const std::vector<float>& eps, Field field,
+                        const std::optional<std::array<double, 2>>& range);
 
 Window latticeWindow(const lb::Lattice& lattice);
 

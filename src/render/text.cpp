@@ -32,35 +32,19 @@ std::string findSansFont() {
   return path;
 }
 
-// Code points of a UTF-8 string; a malformed byte stands for itself.
+// Code points of a UTF-8 string (fontconfig's decoder); decoding stops at a
+// malformed sequence.
 std::vector<char32_t> decodeUtf8(const std::string& s) {
   std::vector<char32_t> out;
-  for (std::size_t k = 0; k < s.size();) {
-    const unsigned char c = s[k];
-    const int extra = c < 0x80         ? 0
-                      : (c >> 5) == 6  ? 1
-                      : (c >> 4) == 14 ? 2
-                      : (c >> 3) == 30 ? 3
-                                       : -1;
-    if (extra < 0 || k + std::size_t(extra) >= s.size() + (extra == 0)) {
-      out.push_back(c);
-      ++k;
-      continue;
-    }
-    char32_t cp = extra == 0 ? c : c & (0x3f >> extra);
-    bool ok = true;
-    for (int e = 1; e <= extra; ++e) {
-      const unsigned char d = s[k + e];
-      if ((d >> 6) != 2) ok = false;
-      cp = (cp << 6) | (d & 0x3f);
-    }
-    if (!ok) {
-      out.push_back(c);
-      ++k;
-      continue;
-    }
-    out.push_back(cp);
-    k += std::size_t(extra) + 1;
+  const auto* at = reinterpret_cast<const FcChar8*>(s.data());
+  int left = int(s.size());
+  while (left > 0) {
+    FcChar32 code = 0;
+    const int used = FcUtf8ToUcs4(at, &code, left);
+    if (used <= 0) break;
+    out.push_back(char32_t(code));
+    at += used;
+    left -= used;
   }
   return out;
 }

@@ -245,8 +245,7 @@ int OutputMovie(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
   if (ffmpeg.empty())
     return fail(interp, "RESOURCE FFMPEG",
                 "output movie needs ffmpeg, which is not installed (Debian package ffmpeg)");
-  if (std::any_of(s.recorders.begin(), s.recorders.end(),
-                  [&](const auto& r) { return r->writes(path); }))
+  if (recording(s, path))  // before ffmpeg starts
     return fail(interp, "VALUE OUTPUT",
                 "\"" + path + "\" is already being recorded to; output close it first");
   auto movie = std::make_unique<MovieRecorder>(path, every, fps, view);

@@ -47,6 +47,11 @@ Session::~Session() {
   for (auto& r : recorders) finishQuietly(*r);
 }
 
+bool recording(const Session& s, const std::string& path) {
+  return std::any_of(s.recorders.begin(), s.recorders.end(),
+                     [&](const auto& r) { return r->writes(path); });
+}
+
 int recordStep(Session& s) {
   const long long step = s.manager.stepCount();
   // One recorder failing does not cost the others this step's record; the
@@ -71,8 +76,7 @@ int recordStep(Session& s) {
 }
 
 int closeRecorders(Session& s, const std::string* path) {
-  if (path && std::none_of(s.recorders.begin(), s.recorders.end(),
-                           [&](const auto& r) { return r->writes(*path); }))
+  if (path && !recording(s, *path))
     return fail(s.interp, "LOOKUP OUTPUT", "no output is being recorded to \"" + *path + "\"");
   int code = TCL_OK;
   for (auto it = s.recorders.begin(); it != s.recorders.end();) {
@@ -91,8 +95,7 @@ int closeRecorders(Session& s, const std::string* path) {
 }
 
 int startRecorder(Session& s, std::unique_ptr<Recorder> recorder) {
-  if (std::any_of(s.recorders.begin(), s.recorders.end(),
-                  [&](const auto& r) { return r->writes(recorder->path()); }))
+  if (recording(s, recorder->path()))
     return fail(s.interp, "VALUE OUTPUT",
                 "\"" + recorder->path() + "\" is already being recorded to; output close it first");
   try {

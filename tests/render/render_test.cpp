@@ -62,9 +62,9 @@ TEST(ColorMap, ColoursParseAndPrint) {
     EXPECT_FALSE(parseColor(bad)) << bad;
 }
 
-TEST(Downsample, AveragesBlocks) {
+TEST(Halve, AveragesBlocks) {
   Image big{2, 2, {0, 0, 0, 255, 255, 255, 255, 255, 100, 0, 0, 255, 100, 0, 0, 255}};
-  const Image small = downsample(big, 2);
+  const Image small = halve(big);
   ASSERT_EQ(small.width, 1);
   ASSERT_EQ(small.height, 1);
   EXPECT_EQ(small.rgba, (std::vector<std::uint8_t>{114, 64, 64, 255}));

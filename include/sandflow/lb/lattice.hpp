@@ -140,6 +140,8 @@ class Lattice {
   bool holdsFluid(std::int64_t node) const;
   void setNodeState(std::int64_t node, double rho, const Vec2& latticeU);
   Vec2 latticeVelocity(std::int64_t node) const;
+  // Velocity (lattice units) from a node's moments: the forcing's half step out.
+  Vec2 velocityFromMoments(double rho, double jx, double jy) const;
   // Density and first moment of one node of the population array `f`.
   void moments(const double* f, std::int64_t node, double& rho, double& jx,
                double& jy) const;  // pre-collision velocity, lattice units

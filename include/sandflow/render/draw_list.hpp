@@ -65,7 +65,8 @@ struct Image {
   std::vector<std::uint8_t> rgba;
 };
 
-// Averages factor x factor blocks (supersampling to antialias edges).
-Image downsample(const Image& image, int factor);
+// Averages 2 x 2 blocks, rounding to nearest: a picture drawn at twice its
+// size comes back antialiased.
+Image halve(const Image& image);
 
 }  // namespace sf::render

@@ -55,6 +55,8 @@ struct Session {
   ~Session();
 };
 
+// Whether a recorder writes to this path (as the same file by any name).
+bool recording(const Session& s, const std::string& path);
 // Calls the recorders due after the step just taken. A recorder that fails is
 // finished (as far as it can be) and removed; the Tcl error names its file.
 int recordStep(Session& s);
