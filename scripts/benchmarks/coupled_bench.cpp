@@ -4,7 +4,9 @@
 // kernels; and the solid-ratio knob: cost per covered cell and the Couette
 // error of each setting.
 //
-//   sandflow_coupled_bench ?--steps N? ?--threads T? ?--reps R? ?--quick?
+//   sandflow_coupled_bench ?--steps N? ?--threads T? ?--reps R? ?--quick? ?--profile?
+//
+// --profile runs only the coupled scene with exact solid ratios, for a profiler.
 //
 // Prints plain tables and the targets' verdicts (scripts/bench --coupled runs
 // it). Each measurement is the best of R repetitions; the bare kernel and the
@@ -143,7 +145,7 @@ std::pair<double, double> couette(int subcells) {
 int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // a line at a time, also into a file
   int steps = 40, threads = 2, reps = 3;
-  bool quick = false;
+  bool quick = false, profile = false;
   for (int k = 1; k < argc; ++k) {
     if (!std::strcmp(argv[k], "--steps") && k + 1 < argc)
       steps = std::atoi(argv[++k]);
@@ -153,12 +155,27 @@ int main(int argc, char** argv) {
       reps = std::max(1, std::atoi(argv[++k]));
     else if (!std::strcmp(argv[k], "--quick"))
       quick = true;
+    else if (!std::strcmp(argv[k], "--profile"))
+      profile = true;
     else {
-      std::fprintf(stderr, "usage: %s ?--steps N? ?--threads T? ?--reps R? ?--quick?\n", argv[0]);
+      std::fprintf(stderr, "usage: %s ?--steps N? ?--threads T? ?--reps R? ?--quick? ?--profile?\n",
+                   argv[0]);
       return 2;
     }
   }
   const int n = 1024;
+  if (profile) {
+    sim::Manager m;
+    m.setThreads(threads);
+    m.createLattice(channel(n));
+    addDiscs(m, n, 0.10, 11);
+    const Split t = timeSteps(m, steps);
+    std::printf(
+        "total %.2f bulk %.2f covered %.2f fill %.2f ratio %.2f forces %.2f DEM %.2f ms/step\n",
+        t.total * 1e3, t.bulk * 1e3, t.covered * 1e3, t.fill * 1e3, t.coverage * 1e3,
+        t.forces * 1e3, t.dem * 1e3);
+    return 0;
+  }
   bench::measureBandwidth(512, 6, {threads});
   const double roof = bench::bandwidth[threads].copy * 1000 / 144.0;
   std::printf("copy bandwidth %.2f GB/s with %d threads -> fluid roofline %.1f MLUPS\n\n",

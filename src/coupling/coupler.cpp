@@ -114,39 +114,66 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     }
   }
   sortByNode();
+  // The cells: where the sorted nodes change, counted chunk by chunk and then
+  // filled, each by the chunk its first piece lies in (any thread count, the
+  // same list).
   std::vector<lb::CoveredCell>& cells = cellsBuffer_;  // reused: no fresh pages per step
-  cells.clear();
-  epsSum_.clear();
-  cellStart_.clear();
-  for (std::size_t k = 0; k < order_.size();) {
-    const std::uint32_t node = keys_[k];
-    const std::size_t first = k;
-    double sum = 0;
-    const auto cell = std::int32_t(cells.size());
-    for (; k < order_.size() && keys_[k] == node; ++k) {
-      Piece& p = pieces_[order_[k]];
-      p.cell = cell;
-      sum += p.eps;
+  const std::ptrdiff_t count = std::ptrdiff_t(order_.size());
+  const std::ptrdiff_t chunks = (count + kChunk - 1) / kChunk;
+  auto starts = [&](std::ptrdiff_t k) { return k == 0 || keys_[k] != keys_[k - 1]; };
+  chunkCells_.assign(chunks + 1, 0);
+#pragma omp parallel for schedule(static) num_threads(threads) if (chunks > 1)
+  for (std::ptrdiff_t c = 0; c < chunks; ++c)
+    for (std::ptrdiff_t k = c * kChunk; k < std::min(count, (c + 1) * kChunk); ++k)
+      chunkCells_[c + 1] += starts(k);
+  for (std::ptrdiff_t c = 0; c < chunks; ++c) chunkCells_[c + 1] += chunkCells_[c];
+  const std::size_t total = chunkCells_[chunks];
+  cells.resize(total), epsSum_.resize(total), cellStart_.resize(total + 1);
+  cellStart_[total] = std::int32_t(count);
+#pragma omp parallel for schedule(static) num_threads(threads) if (chunks > 1)
+  for (std::ptrdiff_t c = 0; c < chunks; ++c) {
+    std::int32_t cell = chunkCells_[c];
+    for (std::ptrdiff_t k = c * kChunk; k < std::min(count, (c + 1) * kChunk); ++k) {
+      if (!starts(k)) continue;
+      const std::uint32_t node = keys_[k];
+      double sum = 0;
+      std::ptrdiff_t end = k;
+      for (; end < count && keys_[end] == node; ++end) {
+        Piece& p = pieces_[order_[end]];
+        p.cell = cell;
+        sum += p.eps;
+      }
+      const bool interior = end - k == 1 && pieces_[order_[k]].interior;
+      cells[cell] = {node, std::min(1.0, sum), 0.0, 0.0, interior};
+      epsSum_[cell] = sum;
+      cellStart_[cell] = std::int32_t(k);
+      ++cell;
     }
-    const bool interior = k - first == 1 && pieces_[order_[first]].interior;
-    cells.push_back({node, std::min(1.0, sum), 0.0, 0.0, interior});
-    epsSum_.push_back(sum);
-    cellStart_.push_back(std::int32_t(first));
   }
-  cellStart_.push_back(std::int32_t(order_.size()));
   // Rigid velocities (vx, vy, w) of the owners: elements as they are, or
   // solved with the exchange they will cause; circles as prescribed.
   velocity_.resize(n);
   for (int s = 0; s < n; ++s) velocity_[s] = Vec3(b.v[s].x(), b.v[s].y(), b.w[s]);
   if (settings.implicit) solveVelocities(lattice, assembly, settings, cells, gravity);
   blendVelocities(lattice, circles, cells);
-  // The fastest surface that the fluid sees (interior cells move no fluid).
+  // The fastest surface that the fluid sees (interior cells move no fluid):
+  // the first fastest cell of each chunk, then of the chunks in order.
+  const std::ptrdiff_t cellChunks = (std::ptrdiff_t(total) + kChunk - 1) / kChunk;
+  chunkFastest_.assign(cellChunks, {0.0, -1});
+#pragma omp parallel for schedule(static) num_threads(threads) if (cellChunks > 1)
+  for (std::ptrdiff_t c = 0; c < cellChunks; ++c) {
+    auto& best = chunkFastest_[c];
+    for (std::ptrdiff_t k = c * kChunk; k < std::min(std::ptrdiff_t(total), (c + 1) * kChunk);
+         ++k) {
+      const lb::CoveredCell& cell = cells[k];
+      const double u2 = cell.ux * cell.ux + cell.uy * cell.uy;
+      if (!cell.interior && u2 > best.first) best = {u2, std::int32_t(k)};
+    }
+  }
   fastest_ = SolidSpeed{};
   double fastest2 = 0;
-  for (std::size_t c = 0; c < cells.size(); ++c) {
-    const lb::CoveredCell& cell = cells[c];
-    const double u2 = cell.ux * cell.ux + cell.uy * cell.uy;
-    if (cell.interior || !(u2 > fastest2)) continue;
+  for (const auto& [u2, c] : chunkFastest_) {
+    if (!(u2 > fastest2)) continue;
     fastest2 = u2;
     const int owner = pieces_[order_[cellStart_[c]]].owner;
     fastest_.element = owner >= 0 ? b.id[owner] : -1;
@@ -184,34 +211,80 @@ void Coupler::blendVelocities(const lb::Lattice& lattice,
   }
 }
 
-// Stable LSD radix sort of the pieces by node, 11 bits a pass, on compact
-// (node, piece) pairs: order_ lists the pieces by node, and for one node in
-// piece order. Nodes fit 32 bits (the lattice's size limit is far below).
-void Coupler::sortByNode() {
+// Stable LSD radix sort of `keys` (11 bits a pass): `order` lists their
+// indices by key, equal keys in index order. Keys are nodes, which fit 32 bits
+// (the lattice's size limit is far below).
+void Coupler::radixSort(std::vector<std::uint32_t>& keys, std::vector<std::int32_t>& order) {
   constexpr int kBits = 11, kBuckets = 1 << kBits;
-  const std::size_t count = keys_.size();
+  const std::size_t count = keys.size();
   keysScratch_.resize(count);
-  order_.resize(count), orderScratch_.resize(count);
+  order.resize(count), orderScratch_.resize(count);
   std::uint32_t top = 0;
   for (std::size_t k = 0; k < count; ++k) {
-    order_[k] = std::int32_t(k);
-    top = std::max(top, keys_[k]);
+    order[k] = std::int32_t(k);
+    top = std::max(top, keys[k]);
   }
   std::vector<std::int32_t>& start = bucketStart_;
   start.resize(kBuckets + 1);
   for (int shift = 0; shift == 0 || (top >> shift) > 0; shift += kBits) {
     std::fill(start.begin(), start.end(), 0);
-    for (std::uint32_t key : keys_) ++start[((key >> shift) & (kBuckets - 1)) + 1];
+    for (std::uint32_t key : keys) ++start[((key >> shift) & (kBuckets - 1)) + 1];
     for (int d = 0; d < kBuckets; ++d) start[d + 1] += start[d];
     for (std::size_t k = 0; k < count; ++k) {
-      const std::int32_t to = start[(keys_[k] >> shift) & (kBuckets - 1)]++;
-      keysScratch_[to] = keys_[k];
-      orderScratch_[to] = order_[k];
+      const std::int32_t to = start[(keys[k] >> shift) & (kBuckets - 1)]++;
+      keysScratch_[to] = keys[k];
+      orderScratch_[to] = order[k];
     }
-    keys_.swap(keysScratch_);
-    order_.swap(orderScratch_);
+    keys.swap(keysScratch_);
+    order.swap(orderScratch_);
     if (shift + kBits >= 32) break;
   }
+}
+
+// The pieces in node order (order_, with keys_ sorted alongside), equal nodes
+// in piece order: what a stable sort of all pieces gives. A solid's pieces
+// come row by row, so they form runs of consecutive nodes, a few per solid:
+// the runs are sorted, laid end to end, and only where runs overlap (cells
+// that several solids share) are their pieces sorted one by one.
+void Coupler::sortByNode() {
+  const std::size_t count = keys_.size();
+  runFirst_.clear(), runKeys_.clear();
+  for (std::size_t k = 0; k < count; ++k)
+    if (k == 0 || keys_[k] != keys_[k - 1] + 1) {
+      runFirst_.push_back(std::int32_t(k));
+      runKeys_.push_back(keys_[k]);
+    }
+  runFirst_.push_back(std::int32_t(count));
+  const std::vector<std::int32_t>& first = runFirst_;
+  radixSort(runKeys_, runOrder_);
+  sortedKeys_.resize(count), order_.resize(count);
+  std::size_t out = 0;
+  const std::size_t runs = runOrder_.size();
+  for (std::size_t r = 0; r < runs;) {
+    // A group: runs whose node ranges overlap, one after another.
+    std::size_t end = r + 1;
+    auto last = [&](std::size_t q) {
+      const std::int32_t run = runOrder_[q];
+      return keys_[first[run + 1] - 1];
+    };
+    std::uint32_t reach = last(r);
+    while (end < runs && runKeys_[end] <= reach) reach = std::max(reach, last(end++));
+    if (end == r + 1) {
+      for (std::int32_t k = first[runOrder_[r]]; k < first[runOrder_[r] + 1]; ++k)
+        sortedKeys_[out] = keys_[k], order_[out++] = k;
+    } else {
+      const std::size_t from = out;
+      for (std::size_t q = r; q < end; ++q)
+        for (std::int32_t k = first[runOrder_[q]]; k < first[runOrder_[q] + 1]; ++k)
+          sortedKeys_[out] = keys_[k], order_[out++] = k;
+      std::sort(order_.begin() + from, order_.begin() + out, [&](std::int32_t x, std::int32_t y) {
+        return keys_[x] != keys_[y] ? keys_[x] < keys_[y] : x < y;
+      });
+      for (std::size_t q = from; q < out; ++q) sortedKeys_[q] = keys_[order_[q]];
+    }
+    r = end;
+  }
+  keys_.swap(sortedKeys_);
 }
 
 // The implicit coupling. The momentum a cell gives the fluid is linear in the

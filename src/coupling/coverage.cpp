@@ -22,6 +22,87 @@ double measure(const Footprint& f, const Vec2& lo, double h, int subcells) {
   return double(in) / (subcells * subcells);
 }
 
+// A convex footprint row by row: each row's touched and fully held cells are
+// intervals (Footprint::band), so only the cells at a row's two ends are
+// measured. So are the cells measured as 1 (all subcell centres inside: for a
+// convex shape, the full interval grown by a few cells), and a cell is
+// interior when those intervals of its row and of the rows above and below
+// reach past it on both sides. Gives the cells, in the order and with the
+// classification, of the cell-by-cell pass.
+bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int subcells, int i0,
+                 int i1, int j0, int j1, std::vector<CellCover>& out) {
+  const int hgt = j1 - j0 + 1;
+  struct Row {
+    int lo = 1, hi = 0;          // touched cells, clipped to [i0, i1]; empty: lo > hi
+    int fullLo = 1, fullHi = 0;  // cells that hold the band
+    int oneLo = 1, oneHi = 0;    // cells whose ratio is 1 (a superset)
+    std::size_t at = 0;          // the row's ratios in `eps`, from cell lo
+  };
+  thread_local std::vector<Row> rows;  // with an empty row above and below
+  thread_local std::vector<double> eps;
+  rows.assign(std::size_t(hgt + 2), Row{});
+  eps.clear();
+  const double h = g.h, ox = g.origin.x();
+  const Vec2 half(0.5 * h, 0.5 * h);
+  auto cellLo = [&](int i) { return ox + i * h; };
+  auto arm = [&](int i, int b) -> Vec2 {
+    return g.origin + Vec2((i + 0.5) * h, (j0 + b + 0.5) * h) - reference;
+  };
+  for (int b = 0; b < hgt; ++b) {
+    Footprint::Band band;
+    if (!f.band(g.origin.y() + (j0 + b) * h, g.origin.y() + (j0 + b + 1) * h, band)) return false;
+    Row& r = rows[b + 1];
+    if (band.lo > band.hi) continue;
+    r.lo = std::max(i0, int(std::floor((band.lo - ox) / h)));
+    r.hi = std::min(i1, int(std::floor((band.hi - ox) / h)));
+    if (r.lo > r.hi) continue;
+    if (band.fullLo <= band.fullHi) {
+      // Cell i holds the band when cellLo(i) >= fullLo and cellLo(i + 1) <= fullHi.
+      int a = int(std::ceil((band.fullLo - ox) / h));
+      int z = int(std::floor((band.fullHi - ox) / h)) - 1;
+      while (cellLo(a) < band.fullLo) ++a;
+      while (cellLo(a - 1) >= band.fullLo) --a;
+      while (cellLo(z + 1) > band.fullHi) --z;
+      while (cellLo(z + 2) <= band.fullHi) ++z;
+      r.fullLo = std::max(a, r.lo), r.fullHi = std::min(z, r.hi);
+    }
+    r.at = eps.size();
+    for (int i = r.lo; i <= r.hi; ++i)
+      eps.push_back(i >= r.fullLo && i <= r.fullHi
+                        ? 1.0
+                        : measure(f, reference + arm(i, b) - half, h, subcells));
+    auto one = [&](int i) { return eps[r.at + (i - r.lo)] >= 1; };
+    r.oneLo = r.fullLo, r.oneHi = r.fullHi;
+    if (r.oneLo > r.oneHi) {
+      r.oneLo = r.lo;
+      while (r.oneLo <= r.hi && !one(r.oneLo)) ++r.oneLo;
+      r.oneHi = r.oneLo;
+      if (r.oneLo > r.hi) r.oneLo = 1, r.oneHi = 0;
+    }
+    if (r.oneLo <= r.oneHi) {
+      while (r.oneLo > r.lo && one(r.oneLo - 1)) --r.oneLo;
+      while (r.oneHi < r.hi && one(r.oneHi + 1)) ++r.oneHi;
+    }
+  }
+  for (int b = 0; b < hgt; ++b) {
+    const Row &r = rows[b + 1], &below = rows[b], &above = rows[b + 2];
+    if (r.lo > r.hi) continue;
+    const int j = wrap(j0 + b, g.ny, g.periodicY);
+    if (j < 0) continue;
+    const bool inner = below.oneLo <= below.oneHi && above.oneLo <= above.oneHi;
+    const int innerLo = std::max({r.oneLo, below.oneLo, above.oneLo}) + 1;
+    const int innerHi = std::min({r.oneHi, below.oneHi, above.oneHi}) - 1;
+    for (int i = r.lo; i <= r.hi; ++i) {
+      const double e = eps[r.at + (i - r.lo)];
+      if (e <= 0) continue;
+      const int wi = wrap(i, g.nx, g.periodicX);
+      if (wi < 0) continue;
+      out.push_back({wi, j, e, arm(i, b), inner && i >= innerLo && i <= innerHi});
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 void cover(const Footprint& f, const Vec2& reference, const Grid& g, int subcells,
@@ -41,6 +122,7 @@ void cover(const Footprint& f, const Vec2& reference, const Grid& g, int subcell
   }
   if (i0 > i1 || j0 > j1) return;
   const int w = i1 - i0 + 1, hgt = j1 - j0 + 1;
+  if (!f.everywhere && coverByRows(f, reference, g, subcells, i0, i1, j0, j1, out)) return;
   // Coverage on the visited block, with a ring of zeros for the interior test.
   thread_local std::vector<double> eps;  // scratch, reused: no allocation per element
   eps.assign(std::size_t(w + 2) * (hgt + 2), 0.0);

@@ -32,6 +32,21 @@ class CircleFootprint final : public Footprint {
     const double a = geometry::circleRectangleArea(c_, r_, lo, lo + Vec2(h, h));
     return outside_ ? h * h - a : a;
   }
+  bool band(double y0, double y1, Band& out) const override {
+    if (outside_) return false;
+    const double d0 = y0 - c_.y(), d1 = y1 - c_.y();
+    const double nearest = d0 <= 0 && d1 >= 0 ? 0.0 : std::min(std::abs(d0), std::abs(d1));
+    const double farthest = std::max(std::abs(d0), std::abs(d1));
+    out = {1, 0, 1, 0};
+    if (nearest >= r_) return true;
+    const double wide = std::sqrt(r_ * r_ - nearest * nearest);
+    out.lo = c_.x() - wide, out.hi = c_.x() + wide;
+    if (farthest < r_) {
+      const double narrow = std::sqrt(r_ * r_ - farthest * farthest);
+      out.fullLo = c_.x() - narrow, out.fullHi = c_.x() + narrow;
+    }
+    return true;
+  }
 
  private:
   Vec2 c_;
@@ -56,6 +71,31 @@ class PolygonFootprint : public Footprint {
     return d;
   }
   bool inside(const Vec2& x) const override { return distance(x) <= 0; }
+  // The band's part of the polygon reaches as far as its vertices in the band
+  // and its edges' crossings of the band's two lines; it holds the whole band
+  // where the chords at both lines overlap (convexity).
+  bool band(double y0, double y1, Band& out) const override {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    double lo = inf, hi = -inf, lo0 = inf, hi0 = -inf, lo1 = inf, hi1 = -inf;
+    for (std::size_t k = 0; k < v_.size(); ++k) {
+      const Vec2 &p = v_[k], &q = v_[(k + 1) % v_.size()];
+      if (p.y() >= y0 && p.y() <= y1) lo = std::min(lo, p.x()), hi = std::max(hi, p.x());
+      auto crossing = [&](double y, double& l, double& h) {
+        if ((p.y() - y) * (q.y() - y) > 0) return;
+        const double x =
+            p.y() == q.y() ? p.x() : p.x() + (y - p.y()) * (q.x() - p.x()) / (q.y() - p.y());
+        const double x2 = p.y() == q.y() ? q.x() : x;
+        l = std::min({l, x, x2}), h = std::max({h, x, x2});
+      };
+      crossing(y0, lo0, hi0);
+      crossing(y1, lo1, hi1);
+    }
+    out.lo = std::min({lo, lo0, lo1}), out.hi = std::max({hi, hi0, hi1});
+    out.fullLo = std::max(lo0, lo1), out.fullHi = std::min(hi0, hi1);
+    if (!(out.lo <= out.hi)) out.lo = 1, out.hi = 0;
+    if (!(out.fullLo <= out.fullHi)) out.fullLo = 1, out.fullHi = 0;
+    return true;
+  }
   double cellArea(const Vec2& lo, double h) const override {
     const std::vector<Vec2> cell = {lo, lo + Vec2(h, 0), lo + Vec2(h, h), lo + Vec2(0, h)};
     const std::vector<Vec2> part = dem::geometry::clip(cell, v_);
@@ -79,6 +119,8 @@ class SuperquadricFootprint final : public PolygonFootprint {
   bool inside(const Vec2& x) const override {
     return shape_.implicit(rotated(x - x_, -angle_)) <= 0;
   }
+  // The curve is not its outline: cell by cell, with the slack.
+  bool band(double, double, Band&) const override { return false; }
 
  private:
   const dem::Superquadric& shape_;

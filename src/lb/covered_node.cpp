@@ -89,6 +89,16 @@ StepStats runAll(const StepContext& ctx, const CoveredNode& node) {
 
 }  // namespace
 
+StepStats CoveredNode::run(const StepContext& ctx, std::ptrdiff_t first,
+                           std::ptrdiff_t last) const {
+  const bool guo = ctx.forceScheme == ForceScheme::guo;
+  if (ctx.collision == Collision::bgk)
+    return guo ? runBlock<Collision::bgk, ForceScheme::guo>(ctx, *this, first, last)
+               : runBlock<Collision::bgk, ForceScheme::nodal>(ctx, *this, first, last);
+  return guo ? runBlock<Collision::trt, ForceScheme::guo>(ctx, *this, first, last)
+             : runBlock<Collision::trt, ForceScheme::nodal>(ctx, *this, first, last);
+}
+
 StepStats CoveredNode::streamCollide(const StepContext& ctx) const {
   exchange.resize(cells.size());
   if (cells.empty()) return {};

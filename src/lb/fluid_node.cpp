@@ -3,6 +3,7 @@
 // kind, so the loop body vectorizes; per-span reductions are combined in span
 // order so the result does not depend on the thread count.
 #include <algorithm>
+#include <chrono>
 #include <vector>
 
 #include "sandflow/lb/node.hpp"
@@ -77,6 +78,43 @@ StepStats runSpans(const StepContext& ctx, const std::vector<FluidNode::Span>& s
   return total;
 }
 
+template <Collision C, ForceScheme S>
+StepStats sweep(const StepContext& ctx, const std::vector<FluidNode::Span>& spans,
+                const std::vector<FluidNode::Block>& blocks, const CoveredNode& covered,
+                double& coveredSeconds) {
+  using Clock = std::chrono::steady_clock;
+  const std::ptrdiff_t n = std::ptrdiff_t(blocks.size());
+  std::vector<StepStats> partial(blocks.size());
+  std::vector<double> seconds(blocks.size(), 0.0);
+  const std::ptrdiff_t nodes = std::ptrdiff_t(covered.cells.size()) + [&] {
+    std::ptrdiff_t m = 0;
+    for (const FluidNode::Span& s : spans) m += s.length;
+    return m;
+  }();
+  covered.exchange.resize(covered.cells.size());
+  const bool parallel = nodes >= kParallelNodes;
+#pragma omp parallel for schedule(static) num_threads(ctx.threads) if (parallel)
+  for (std::ptrdiff_t b = 0; b < n; ++b) {
+    const std::int32_t span0 = b == 0 ? 0 : blocks[b - 1].spanEnd;
+    const std::int32_t cell0 = b == 0 ? 0 : blocks[b - 1].cellEnd;
+    StepStats stats;
+    for (std::int32_t k = span0; k < blocks[b].spanEnd; ++k)
+      stats.merge(runSpan<C, S>(ctx, spans[k].first, spans[k].length));
+    if (blocks[b].cellEnd > cell0) {
+      const auto t0 = Clock::now();
+      stats.merge(covered.run(ctx, cell0, blocks[b].cellEnd));
+      seconds[b] = std::chrono::duration<double>(Clock::now() - t0).count();
+    }
+    partial[b] = stats;
+  }
+  StepStats total;
+  for (const StepStats& p : partial) total.merge(p);
+  double spent = 0;
+  for (double t : seconds) spent += t;
+  coveredSeconds += spent / (parallel ? std::max(1, ctx.threads) : 1);
+  return total;
+}
+
 }  // namespace
 
 std::size_t FluidNode::count() const {
@@ -87,11 +125,16 @@ std::size_t FluidNode::count() const {
 
 void FluidNode::exclude(const std::vector<CoveredCell>& cells) {
   cut_.clear();
+  blocks_.clear();
+  blockCells_ = 0;
   useCut_ = !cells.empty();
   if (!useCut_) return;
+  bool sorted = true;
+  for (std::size_t k = 1; k < cells.size() && sorted; ++k)
+    sorted = cells[k - 1].node < cells[k].node;
   order_.resize(cells.size());
   for (std::size_t k = 0; k < cells.size(); ++k) order_[k] = cells[k].node;
-  if (!std::is_sorted(order_.begin(), order_.end())) std::sort(order_.begin(), order_.end());
+  if (!sorted) std::sort(order_.begin(), order_.end());
   // Spans and nodes both ascend: one merge cuts every span around its nodes.
   std::size_t c = 0;
   const std::size_t n = order_.size();
@@ -105,6 +148,41 @@ void FluidNode::exclude(const std::vector<CoveredCell>& cells) {
     }
     if (end > at) cut_.push_back({at, std::int32_t(end - at)});
   }
+  if (!sorted || cut_.empty()) return;
+  // Blocks of about kSweepNodes nodes, cut where a span starts; a block's
+  // cells are those before the next block's first span.
+  constexpr std::ptrdiff_t kSweepNodes = 8192;
+  std::ptrdiff_t nodes = 0;
+  c = 0;
+  for (std::size_t k = 0; k < cut_.size(); ++k) {
+    nodes += cut_[k].length;
+    const bool last = k + 1 == cut_.size();
+    if (nodes < kSweepNodes && !last) continue;
+    if (last)
+      c = n;
+    else
+      while (c < n && order_[c] < cut_[k + 1].first) ++c;
+    blocks_.push_back({std::int32_t(k + 1), std::int32_t(c)});
+    nodes = 0;
+  }
+  blockCells_ = cells.size();
+}
+
+bool FluidNode::sweepsWith(const CoveredNode& covered) const {
+  return useCut_ && !blocks_.empty() && blockCells_ == covered.cells.size();
+}
+
+StepStats FluidNode::streamCollideWith(const StepContext& ctx, const CoveredNode& covered,
+                                       double& coveredSeconds) const {
+  const std::vector<Block>& blocks = blocks_;
+  const bool guo = ctx.forceScheme == ForceScheme::guo;
+  if (ctx.collision == Collision::bgk)
+    return guo ? sweep<Collision::bgk, ForceScheme::guo>(ctx, cut_, blocks, covered, coveredSeconds)
+               : sweep<Collision::bgk, ForceScheme::nodal>(ctx, cut_, blocks, covered,
+                                                           coveredSeconds);
+  return guo ? sweep<Collision::trt, ForceScheme::guo>(ctx, cut_, blocks, covered, coveredSeconds)
+             : sweep<Collision::trt, ForceScheme::nodal>(ctx, cut_, blocks, covered,
+                                                         coveredSeconds);
 }
 
 StepStats FluidNode::streamCollide(const StepContext& ctx) const {

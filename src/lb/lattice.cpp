@@ -102,10 +102,20 @@ StepStats Lattice::step(double machLimit) {
   const auto t0 = Clock::now();
   const StepContext ctx = context();
   StepStats stats;
-  for (const auto& k : kinds_) stats.merge(k->streamCollide(ctx));
-  const auto t1 = Clock::now();
-  stats.merge(covered_.streamCollide(ctx));
+  // The covered cells in the bulk's sweep when they can be, else after it.
+  const FluidNode& fluid = static_cast<const FluidNode&>(*kinds_.front());
+  const bool together = fluid.sweepsWith(covered_);
+  double coveredSeconds = 0;
+  for (const auto& k : kinds_)
+    stats.merge(k.get() == &fluid && together
+                    ? fluid.streamCollideWith(ctx, covered_, coveredSeconds)
+                    : k->streamCollide(ctx));
+  auto t1 = Clock::now();
+  if (!together) stats.merge(covered_.streamCollide(ctx));
   const auto t2 = Clock::now();
+  if (together)
+    t1 -=
+        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(coveredSeconds));
   if (!std::isfinite(stats.mass) || !(stats.maxU2 <= machLimit * machLimit))
     reportInstability(stats, machLimit);
   std::swap(f_, g_);

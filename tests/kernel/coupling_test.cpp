@@ -4,10 +4,13 @@
 
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <numbers>
+#include <random>
 
 #include "coupled_helpers.hpp"
 #include "sandflow/core/error.hpp"
+#include "sandflow/coupling/coverage.hpp"
 
 namespace sf {
 namespace {
@@ -147,6 +150,56 @@ TEST(Coupling, OneAndTwoThreadsGiveIdenticalResults) {
   const std::vector<double> a = coupledState(1), b = coupledState(2);
   ASSERT_EQ(a.size(), b.size());
   EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
+}
+
+// Many overlapping solids and a container: each covered node is listed once,
+// in node order, with the sum of every owner's own coverage (capped at 1).
+TEST(Coupling, SharedCellsMergeEveryOwnersCoverage) {
+  sim::Manager m;
+  const int n = 64;
+  m.createLattice(test::periodicSquare(1.0, n, 0.01));
+  const int mat = test::softMaterial(m, 3.0);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  const std::uint8_t held = dem::holdX | dem::holdY | dem::holdRotation;
+  for (int k = 0; k < 40; ++k)
+    test::addDisc(m, mat, Vec2(u(rng), u(rng)), 0.03 + 0.09 * u(rng), Vec2::Zero(), 0, held);
+  m.lattice().addCircle({-1, Vec2(0.47, 0.52), 0.45, true, Vec2::Zero(), 0});
+  m.step();
+
+  coupling::Grid g;
+  g.h = 1.0 / n, g.nx = g.ny = n, g.periodicX = g.periodicY = true;
+  std::vector<double> sum(n * n, 0.0);
+  std::vector<int> owners(n * n, 0);
+  auto add = [&](const coupling::Footprint& f, const Vec2& at) {
+    std::vector<coupling::CellCover> cells;
+    coupling::cover(f, at, g, coupling::kExact, cells);
+    for (const coupling::CellCover& c : cells) sum[c.j * n + c.i] += c.eps, ++owners[c.j * n + c.i];
+  };
+  const dem::Bodies& b = m.assembly().bodies();
+  for (int s = 0; s < b.size(); ++s) add(*coupling::footprintOf(*b.shape[s], b.x[s], 0), b.x[s]);
+  add(*coupling::circleFootprint(Vec2(0.47, 0.52), 0.45, true), Vec2(0.47, 0.52));
+
+  const lb::Lattice& l = m.lattice();
+  std::vector<std::int64_t> node(n * n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) node[j * n + i] = l.nodeIndex(i, j);
+  std::map<std::int64_t, int> cellAt;
+  for (int c = 0; c < n * n; ++c) cellAt[node[c]] = c;
+  const std::vector<lb::CoveredCell>& cells = l.coveredCells();
+  int shared = 0;
+  std::size_t expected = 0;
+  for (int c = 0; c < n * n; ++c) expected += owners[c] > 0, shared += owners[c] > 1;
+  ASSERT_EQ(cells.size(), expected);
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    if (k > 0) {
+      ASSERT_LT(cells[k - 1].node, cells[k].node);
+    }
+    const int c = cellAt.at(cells[k].node);
+    EXPECT_NEAR(cells[k].eps, std::min(1.0, sum[c]), 1e-12) << c;
+    EXPECT_TRUE(owners[c] == 1 || !cells[k].interior) << c;  // a solid's interior is its own
+  }
+  EXPECT_GT(shared, 300);  // the merge was exercised
 }
 
 TEST(Coupling, TooFastASolidStopsTheStepBeforeAnythingChanges) {

@@ -79,6 +79,7 @@ class Coupler {
   void solveVelocities(const lb::Lattice& lattice, const dem::Assembly& assembly,
                        const Settings& settings, const std::vector<lb::CoveredCell>& cells,
                        const Vec2& gravity);
+  void radixSort(std::vector<std::uint32_t>& keys, std::vector<std::int32_t>& order);
   void sortByNode();
   // How many solids cover covered cell c (its pieces).
   int sharing(std::int32_t c) const { return cellStart_[c + 1] - cellStart_[c]; }
@@ -91,7 +92,11 @@ class Coupler {
   std::vector<std::int32_t> order_;      // pieces in node order
   std::vector<std::uint32_t> keys_;      // per piece its node; after sortByNode, in node order
   std::vector<std::int32_t> orderScratch_, bucketStart_;  // the sort's buffers
-  std::vector<std::uint32_t> keysScratch_;
+  std::vector<std::uint32_t> keysScratch_, sortedKeys_, runKeys_;
+  std::vector<std::int32_t> runFirst_, runOrder_;  // runs of consecutive nodes
+  static constexpr std::ptrdiff_t kChunk = 8192;   // pieces or cells a parallel task takes
+  std::vector<std::int32_t> chunkCells_;           // per chunk of pieces: cells before it
+  std::vector<std::pair<double, std::int32_t>> chunkFastest_;  // per chunk of cells: |u|^2, cell
   std::vector<std::int32_t> cellStart_;  // per covered cell: its first entry in order_
   std::vector<double> epsSum_;           // per covered cell
   std::vector<Vec3> velocity_;           // per element: (vx, vy, w) the fluid sees

@@ -20,6 +20,18 @@ class Footprint {
   virtual bool inside(const Vec2& x) const = 0;
   // Area of the solid inside the square [lo, lo + h]^2.
   virtual double cellArea(const Vec2& lo, double h) const = 0;
+  // For a convex solid whose `inside` is exact: within the band y0 <= y <= y1,
+  // the x-interval it touches [lo, hi] and the x-interval [fullLo, fullHi]
+  // where it holds the whole band (an empty one has lo > hi). Lets the pass
+  // classify a row of cells at once. False when the shape cannot say; the
+  // pass then asks `distance` cell by cell.
+  struct Band {
+    double lo, hi, fullLo, fullHi;
+  };
+  virtual bool band(double y0, double y1, Band& out) const {
+    (void)y0, (void)y1, (void)out;
+    return false;
+  }
   // Where the solid may be; `everywhere` for a container that is solid outside.
   dem::Box box;
   bool everywhere = false;

@@ -63,6 +63,7 @@ class Node {
 };
 
 struct CoveredCell;
+class CoveredNode;
 
 // Bulk fluid: contiguous spans of a row, fused pull-stream and collide, no branches.
 class FluidNode final : public Node {
@@ -71,6 +72,9 @@ class FluidNode final : public Node {
     std::ptrdiff_t first;
     std::int32_t length;
   };
+  struct Block {  // a stretch of rows: where its spans and covered cells end
+    std::int32_t spanEnd, cellEnd;
+  };
   std::vector<Span> spans;
   const char* name() const override { return "fluid"; }
   std::size_t count() const override;
@@ -78,10 +82,20 @@ class FluidNode final : public Node {
   // Leaves the covered cells (which their own pass computes) out of the spans
   // until the next call: the bulk then does no work twice.
   void exclude(const std::vector<CoveredCell>& cells);
+  // True when the cells last excluded are in node order: the bulk and the
+  // covered cells can then run in one sweep (streamCollideWith).
+  bool sweepsWith(const CoveredNode& covered) const;
+  // The bulk and the covered cells block by block, each block's covered cells
+  // right after its spans, while the rows they pull from are in cache. Adds
+  // the thread-seconds spent in covered cells to `coveredSeconds`.
+  StepStats streamCollideWith(const StepContext& ctx, const CoveredNode& covered,
+                              double& coveredSeconds) const;
 
  private:
   std::vector<Span> cut_;  // the spans less the covered cells
   bool useCut_ = false;
+  std::vector<Block> blocks_;  // of cut_, when the covered cells are in node order
+  std::size_t blockCells_ = 0;
   std::vector<std::int64_t> order_;  // scratch: covered nodes in order
 };
 
@@ -140,6 +154,8 @@ class CoveredNode final : public Node {
   const char* name() const override { return "covered"; }
   std::size_t count() const override { return cells.size(); }
   StepStats streamCollide(const StepContext& ctx) const override;
+  // Cells [first, last) alone; `exchange` must hold every cell already.
+  StepStats run(const StepContext& ctx, std::ptrdiff_t first, std::ptrdiff_t last) const;
 };
 
 // Interior of fixed solids: removed from the work; kept to be counted.
