@@ -123,9 +123,11 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   auto starts = [&](std::ptrdiff_t k) { return k == 0 || keys_[k] != keys_[k - 1]; };
   chunkCells_.assign(chunks + 1, 0);
 #pragma omp parallel for schedule(static) num_threads(threads) if (chunks > 1)
-  for (std::ptrdiff_t c = 0; c < chunks; ++c)
-    for (std::ptrdiff_t k = c * kChunk; k < std::min(count, (c + 1) * kChunk); ++k)
-      chunkCells_[c + 1] += starts(k);
+  for (std::ptrdiff_t c = 0; c < chunks; ++c) {
+    std::int32_t m = 0;  // a local: neighbouring counters share a cache line
+    for (std::ptrdiff_t k = c * kChunk; k < std::min(count, (c + 1) * kChunk); ++k) m += starts(k);
+    chunkCells_[c + 1] = m;
+  }
   for (std::ptrdiff_t c = 0; c < chunks; ++c) chunkCells_[c + 1] += chunkCells_[c];
   const std::size_t total = chunkCells_[chunks];
   cells.resize(total), epsSum_.resize(total), cellStart_.resize(total + 1);
@@ -162,13 +164,14 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   chunkFastest_.assign(cellChunks, {0.0, -1});
 #pragma omp parallel for schedule(static) num_threads(threads) if (cellChunks > 1)
   for (std::ptrdiff_t c = 0; c < cellChunks; ++c) {
-    auto& best = chunkFastest_[c];
+    std::pair<double, std::int32_t> best{0.0, -1};
     for (std::ptrdiff_t k = c * kChunk; k < std::min(std::ptrdiff_t(total), (c + 1) * kChunk);
          ++k) {
       const lb::CoveredCell& cell = cells[k];
       const double u2 = cell.ux * cell.ux + cell.uy * cell.uy;
       if (!cell.interior && u2 > best.first) best = {u2, std::int32_t(k)};
     }
+    chunkFastest_[c] = best;
   }
   fastest_ = SolidSpeed{};
   double fastest2 = 0;
@@ -379,21 +382,26 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
   std::vector<Vec2> circleForce(circles.size(), Vec2::Zero());
   std::vector<double> circleTorque(circles.size(), 0.0);
   std::vector<double> submerged(b.size(), 0.0);
-  for (int s = 0; s < b.size(); ++s) b.fluidForce[s] = Vec2::Zero(), b.fluidTorque[s] = 0;
-  // Pieces come grouped by owner in a fixed order: the sums do not depend on
+  // Owner by owner over its pieces, in their order: the sums do not depend on
   // the thread count.
-  for (const Piece& piece : pieces_) {
-    const double share = settings.share == Share::equal ? 1.0 / sharing(piece.cell)
-                                                        : piece.eps / epsSum_[piece.cell];
-    const Vec2 F = -share * scale * exchange[piece.cell];  // the solid gets the opposite
-    const double T = cross(piece.arm, F);
-    if (piece.owner >= 0) {
-      b.fluidForce[piece.owner] += F;
-      b.fluidTorque[piece.owner] += T;
-      submerged[piece.owner] += piece.eps;
+  const int n = b.size(), owners = n + int(circles.size());
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads_) if (owners >= 64)
+  for (int o = 0; o < owners; ++o) {
+    Vec2 force = Vec2::Zero();
+    double torque = 0, area = 0;
+    for (std::size_t k = pieceStart_[o]; k < pieceStart_[o + 1]; ++k) {
+      const Piece& piece = pieces_[k];
+      const double share = settings.share == Share::equal ? 1.0 / sharing(piece.cell)
+                                                          : piece.eps / epsSum_[piece.cell];
+      const Vec2 F = -share * scale * exchange[piece.cell];  // the solid gets the opposite
+      force += F;
+      torque += cross(piece.arm, F);
+      area += piece.eps;
+    }
+    if (o < n) {
+      b.fluidForce[o] = force, b.fluidTorque[o] = torque, submerged[o] = area;
     } else {
-      circleForce[-1 - piece.owner] += F;
-      circleTorque[-1 - piece.owner] += T;
+      circleForce[o - n] = force, circleTorque[o - n] = torque;
     }
   }
   for (std::size_t k = 0; k < circles.size(); ++k)

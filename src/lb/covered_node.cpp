@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "sandflow/lb/kernel_isa.hpp"
 #include "sandflow/lb/node.hpp"
 
 namespace sf::lb {
@@ -14,8 +15,8 @@ using d2q9::Q;
 constexpr std::ptrdiff_t kBlock = 256;
 
 template <Collision C, ForceScheme S>
-StepStats runBlock(const StepContext& ctx, const CoveredNode& node, std::ptrdiff_t first,
-                   std::ptrdiff_t last) {
+SF_KERNEL_CLONES StepStats runBlock(const StepContext& ctx, const CoveredNode& node,
+                                    std::ptrdiff_t first, std::ptrdiff_t last) {
   using namespace d2q9;
   const CollisionParams& p = ctx.params;
   const double tau = 1.0 / p.omegaPlus;

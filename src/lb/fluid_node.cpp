@@ -4,8 +4,10 @@
 // order so the result does not depend on the thread count.
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <vector>
 
+#include "sandflow/lb/kernel_isa.hpp"
 #include "sandflow/lb/node.hpp"
 
 namespace sf::lb {
@@ -14,7 +16,7 @@ namespace {
 using d2q9::Q;
 
 template <Collision C, ForceScheme S>
-StepStats runSpan(const StepContext& ctx, std::ptrdiff_t first, std::ptrdiff_t n) {
+SF_KERNEL_CLONES StepStats runSpan(const StepContext& ctx, std::ptrdiff_t first, std::ptrdiff_t n) {
   const double* __restrict s[Q];
   double* __restrict d[Q];
   for (int i = 0; i < Q; ++i) {
@@ -98,8 +100,19 @@ StepStats sweep(const StepContext& ctx, const std::vector<FluidNode::Span>& span
     const std::int32_t span0 = b == 0 ? 0 : blocks[b - 1].spanEnd;
     const std::int32_t cell0 = b == 0 ? 0 : blocks[b - 1].cellEnd;
     StepStats stats;
-    for (std::int32_t k = span0; k < blocks[b].spanEnd; ++k)
-      stats.merge(runSpan<C, S>(ctx, spans[k].first, spans[k].length));
+    // The block's spans less its covered cells.
+    std::int32_t c = cell0;
+    const std::vector<CoveredCell>& cells = covered.cells;
+    for (std::int32_t k = span0; k < blocks[b].spanEnd; ++k) {
+      std::ptrdiff_t at = spans[k].first;
+      const std::ptrdiff_t end = at + spans[k].length;
+      while (c < blocks[b].cellEnd && cells[c].node < at) ++c;
+      for (; c < blocks[b].cellEnd && cells[c].node < end; ++c) {
+        if (cells[c].node > at) stats.merge(runSpan<C, S>(ctx, at, cells[c].node - at));
+        at = std::max<std::ptrdiff_t>(at, cells[c].node + 1);
+      }
+      if (end > at) stats.merge(runSpan<C, S>(ctx, at, end - at));
+    }
     if (blocks[b].cellEnd > cell0) {
       const auto t0 = Clock::now();
       stats.merge(covered.run(ctx, cell0, blocks[b].cellEnd));
@@ -129,15 +142,35 @@ void FluidNode::exclude(const std::vector<CoveredCell>& cells) {
   blockCells_ = 0;
   useCut_ = !cells.empty();
   if (!useCut_) return;
+  const std::size_t n = cells.size();
   bool sorted = true;
-  for (std::size_t k = 1; k < cells.size() && sorted; ++k)
-    sorted = cells[k - 1].node < cells[k].node;
-  order_.resize(cells.size());
-  for (std::size_t k = 0; k < cells.size(); ++k) order_[k] = cells[k].node;
-  if (!sorted) std::sort(order_.begin(), order_.end());
+  for (std::size_t k = 1; k < n && sorted; ++k) sorted = cells[k - 1].node < cells[k].node;
+  if (sorted && !spans.empty()) {
+    // The sweep cuts the spans round the cells as it goes; here only its
+    // blocks, of about kSweepNodes nodes cut where a span starts, and the
+    // cells in each (those before the next block's first span).
+    constexpr std::ptrdiff_t kSweepNodes = 8192;
+    std::ptrdiff_t nodes = 0;
+    auto c = cells.begin();
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+      nodes += spans[k].length;
+      const bool last = k + 1 == spans.size();
+      if (nodes < kSweepNodes && !last) continue;
+      c = last
+              ? cells.end()
+              : std::lower_bound(c, cells.end(), spans[k + 1].first,
+                                 [](const CoveredCell& x, std::ptrdiff_t v) { return x.node < v; });
+      blocks_.push_back({std::int32_t(k + 1), std::int32_t(c - cells.begin())});
+      nodes = 0;
+    }
+    blockCells_ = n;
+    return;
+  }
+  order_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) order_[k] = cells[k].node;
+  std::sort(order_.begin(), order_.end());
   // Spans and nodes both ascend: one merge cuts every span around its nodes.
   std::size_t c = 0;
-  const std::size_t n = order_.size();
   for (const Span& s : spans) {
     std::ptrdiff_t at = s.first;
     const std::ptrdiff_t end = s.first + s.length;
@@ -148,24 +181,6 @@ void FluidNode::exclude(const std::vector<CoveredCell>& cells) {
     }
     if (end > at) cut_.push_back({at, std::int32_t(end - at)});
   }
-  if (!sorted || cut_.empty()) return;
-  // Blocks of about kSweepNodes nodes, cut where a span starts; a block's
-  // cells are those before the next block's first span.
-  constexpr std::ptrdiff_t kSweepNodes = 8192;
-  std::ptrdiff_t nodes = 0;
-  c = 0;
-  for (std::size_t k = 0; k < cut_.size(); ++k) {
-    nodes += cut_[k].length;
-    const bool last = k + 1 == cut_.size();
-    if (nodes < kSweepNodes && !last) continue;
-    if (last)
-      c = n;
-    else
-      while (c < n && order_[c] < cut_[k + 1].first) ++c;
-    blocks_.push_back({std::int32_t(k + 1), std::int32_t(c)});
-    nodes = 0;
-  }
-  blockCells_ = cells.size();
 }
 
 bool FluidNode::sweepsWith(const CoveredNode& covered) const {
@@ -177,15 +192,18 @@ StepStats FluidNode::streamCollideWith(const StepContext& ctx, const CoveredNode
   const std::vector<Block>& blocks = blocks_;
   const bool guo = ctx.forceScheme == ForceScheme::guo;
   if (ctx.collision == Collision::bgk)
-    return guo ? sweep<Collision::bgk, ForceScheme::guo>(ctx, cut_, blocks, covered, coveredSeconds)
-               : sweep<Collision::bgk, ForceScheme::nodal>(ctx, cut_, blocks, covered,
+    return guo ? sweep<Collision::bgk, ForceScheme::guo>(ctx, spans, blocks, covered,
+                                                         coveredSeconds)
+               : sweep<Collision::bgk, ForceScheme::nodal>(ctx, spans, blocks, covered,
                                                            coveredSeconds);
-  return guo ? sweep<Collision::trt, ForceScheme::guo>(ctx, cut_, blocks, covered, coveredSeconds)
-             : sweep<Collision::trt, ForceScheme::nodal>(ctx, cut_, blocks, covered,
+  return guo ? sweep<Collision::trt, ForceScheme::guo>(ctx, spans, blocks, covered, coveredSeconds)
+             : sweep<Collision::trt, ForceScheme::nodal>(ctx, spans, blocks, covered,
                                                          coveredSeconds);
 }
 
 StepStats FluidNode::streamCollide(const StepContext& ctx) const {
+  if (!blocks_.empty())  // the spans are cut only as the sweep goes
+    throw std::logic_error("FluidNode: covered cells in node order need streamCollideWith");
   const std::vector<Span>& spans = useCut_ ? cut_ : this->spans;
   const bool guo = ctx.forceScheme == ForceScheme::guo;
   if (ctx.collision == Collision::bgk)

@@ -20,6 +20,10 @@
 
 namespace sf::lb {
 
+// Inlined whatever the caller's instruction set (kernel_isa.hpp): a call from a
+// vector loop would stop it vectorizing.
+#define SF_ALWAYS_INLINE [[gnu::always_inline]] inline
+
 enum class Collision { bgk, trt };
 enum class ForceScheme { nodal, guo };
 
@@ -30,13 +34,13 @@ struct CollisionParams {
 };
 
 // Equilibrium f_i^eq(rho, u) for the standard D2Q9 second-order expansion.
-inline double equilibrium(int i, double rho, double ux, double uy) {
+SF_ALWAYS_INLINE double equilibrium(int i, double rho, double ux, double uy) {
   const double eu = d2q9::ex[i] * ux + d2q9::ey[i] * uy;
   return d2q9::w[i] * rho * (1.0 + 3.0 * eu + 4.5 * eu * eu - 1.5 * (ux * ux + uy * uy));
 }
 
 // All nine equilibria at once, sharing the even and odd parts of each pair.
-inline void equilibria(double rho, double ux, double uy, double (&feq)[d2q9::Q]) {
+SF_ALWAYS_INLINE void equilibria(double rho, double ux, double uy, double (&feq)[d2q9::Q]) {
   const double even = 1.0 - 1.5 * (ux * ux + uy * uy);
   feq[0] = d2q9::w[0] * rho * even;
   for (int i = 1; i <= 4; ++i) {
@@ -49,8 +53,8 @@ inline void equilibria(double rho, double ux, double uy, double (&feq)[d2q9::Q])
 
 // Velocity that enters the equilibrium, from density and the raw first moment.
 template <ForceScheme S>
-inline void velocityFromMoments(double rho, double jx, double jy, const CollisionParams& p,
-                                double& ux, double& uy) {
+SF_ALWAYS_INLINE void velocityFromMoments(double rho, double jx, double jy,
+                                          const CollisionParams& p, double& ux, double& uy) {
   const double inv = 1.0 / rho;
   if constexpr (S == ForceScheme::guo) {
     ux = (jx + 0.5 * p.fx) * inv;
@@ -71,7 +75,8 @@ struct NodeMoments {
 
 // Relaxes the pair (I, I + 4), 1 <= I <= 4.
 template <Collision C, ForceScheme S, int I>
-inline void relaxPair(double& fi, double& fo, const NodeMoments& n, const CollisionParams& p) {
+SF_ALWAYS_INLINE void relaxPair(double& fi, double& fo, const NodeMoments& n,
+                                const CollisionParams& p) {
   constexpr double wi = d2q9::w[I];
   constexpr int cx = d2q9::ex[I], cy = d2q9::ey[I];
   const double eu = cx * n.ux + cy * n.uy;
@@ -107,8 +112,9 @@ inline void relaxPair(double& fi, double& fo, const NodeMoments& n, const Collis
 // Collides the nine populations of one node in place. Returns the density; u2
 // receives |u|^2 (lattice units).
 template <Collision C, ForceScheme S>
-inline double collide(double& f0, double& f1, double& f2, double& f3, double& f4, double& f5,
-                      double& f6, double& f7, double& f8, const CollisionParams& p, double& u2) {
+SF_ALWAYS_INLINE double collide(double& f0, double& f1, double& f2, double& f3, double& f4,
+                                double& f5, double& f6, double& f7, double& f8,
+                                const CollisionParams& p, double& u2) {
   const double rho = f0 + f1 + f2 + f3 + f4 + f5 + f6 + f7 + f8;
   const double jx = f1 + f2 + f8 - f4 - f5 - f6;
   const double jy = f2 + f3 + f4 - f6 - f7 - f8;
@@ -131,7 +137,7 @@ inline double collide(double& f0, double& f1, double& f2, double& f3, double& f4
 }
 
 template <Collision C, ForceScheme S>
-inline double collide(double (&f)[d2q9::Q], const CollisionParams& p, double& u2) {
+SF_ALWAYS_INLINE double collide(double (&f)[d2q9::Q], const CollisionParams& p, double& u2) {
   return collide<C, S>(f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], f[8], p, u2);
 }
 

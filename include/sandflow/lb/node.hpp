@@ -92,9 +92,9 @@ class FluidNode final : public Node {
                               double& coveredSeconds) const;
 
  private:
-  std::vector<Span> cut_;  // the spans less the covered cells
+  std::vector<Span> cut_;  // the spans less covered cells given out of node order
   bool useCut_ = false;
-  std::vector<Block> blocks_;  // of cut_, when the covered cells are in node order
+  std::vector<Block> blocks_;  // of spans, when the covered cells are in node order
   std::size_t blockCells_ = 0;
   std::vector<std::int64_t> order_;  // scratch: covered nodes in order
 };
