@@ -51,7 +51,7 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
                       const Vec2& gravity, int threads) {
   const auto t0 = Clock::now();
   threads_ = threads;
-  const Grid grid = gridOf(lattice);
+  Grid grid = gridOf(lattice);
   const dem::Bodies& b = assembly.bodies();
   const int n = b.size();
   const std::vector<lb::CircleObstacle>& circles = lattice.circles();
@@ -60,6 +60,13 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   topology_ = lattice.topologyVersion();
   measuredWith_ = settings;
   if (remeasure) elements_.clear(), circles_.clear();
+  if (remeasure || open_.size() != std::size_t(grid.nx) * grid.ny) {
+    open_.assign(std::size_t(grid.nx) * grid.ny, 0);
+    for (int j = 0; j < grid.ny; ++j)
+      for (int i = 0; i < grid.nx; ++i)
+        open_[std::size_t(j) * grid.nx + i] = lattice.kind(i, j) == lb::NodeKind::fluid;
+  }
+  grid.open = open_.data();
   elements_.resize(n);
   circles_.resize(circles.size());
 
@@ -67,9 +74,6 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   //    kept to the cells that hold bulk fluid.
   auto measure = [&](Cached& c, const Footprint& f, const Vec2& reference) {
     cover(f, reference, grid, settings.subcells, c.cells);
-    std::erase_if(c.cells, [&](const CellCover& cc) {
-      return lattice.kind(cc.i, cc.j) != lb::NodeKind::fluid;
-    });
   };
 #pragma omp parallel for schedule(dynamic, 4) num_threads(threads) if (n >= 16)
   for (int s = 0; s < n; ++s) {
@@ -114,9 +118,15 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     }
   }
   sortByNode();
+  // Rigid velocities (vx, vy, w) of the owners: elements as they are, or
+  // solved with the exchange they will cause; circles as prescribed.
+  velocity_.resize(n);
+  for (int s = 0; s < n; ++s) velocity_[s] = Vec3(b.v[s].x(), b.v[s].y(), b.w[s]);
+  const double toLattice = lattice.params().dt / lattice.params().h;
   // The cells: where the sorted nodes change, counted chunk by chunk and then
   // filled, each by the chunk its first piece lies in (any thread count, the
-  // same list).
+  // same list). Explicitly coupled, each cell gets its solid velocity at once
+  // and each chunk notes its first fastest cell.
   std::vector<lb::CoveredCell>& cells = cellsBuffer_;  // reused: no fresh pages per step
   const std::ptrdiff_t count = std::ptrdiff_t(order_.size());
   const std::ptrdiff_t chunks = (count + kChunk - 1) / kChunk;
@@ -132,9 +142,12 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   const std::size_t total = chunkCells_[chunks];
   cells.resize(total), epsSum_.resize(total), cellStart_.resize(total + 1);
   cellStart_[total] = std::int32_t(count);
+  const bool blendNow = !settings.implicit;
+  chunkFastest_.assign(chunks, {0.0, -1});
 #pragma omp parallel for schedule(static) num_threads(threads) if (chunks > 1)
   for (std::ptrdiff_t c = 0; c < chunks; ++c) {
     std::int32_t cell = chunkCells_[c];
+    std::pair<double, std::int32_t> best{0.0, -1};
     for (std::ptrdiff_t k = c * kChunk; k < std::min(count, (c + 1) * kChunk); ++k) {
       if (!starts(k)) continue;
       const std::uint32_t node = keys_[k];
@@ -146,33 +159,37 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
         sum += p.eps;
       }
       const bool interior = end - k == 1 && pieces_[order_[k]].interior;
-      cells[cell] = {node, std::min(1.0, sum), 0.0, 0.0, interior};
-      epsSum_[cell] = sum;
       cellStart_[cell] = std::int32_t(k);
+      epsSum_[cell] = sum;
+      cells[cell] = {node, std::min(1.0, sum), 0.0, 0.0, interior};
+      if (blendNow) {
+        const Vec2 u = cellVelocity(k, end, sum, circles, toLattice);
+        cells[cell].ux = u.x(), cells[cell].uy = u.y();
+        if (!interior && u.squaredNorm() > best.first) best = {u.squaredNorm(), cell};
+      }
       ++cell;
-    }
-  }
-  // Rigid velocities (vx, vy, w) of the owners: elements as they are, or
-  // solved with the exchange they will cause; circles as prescribed.
-  velocity_.resize(n);
-  for (int s = 0; s < n; ++s) velocity_[s] = Vec3(b.v[s].x(), b.v[s].y(), b.w[s]);
-  if (settings.implicit) solveVelocities(lattice, assembly, settings, cells, gravity);
-  blendVelocities(lattice, circles, cells);
-  // The fastest surface that the fluid sees (interior cells move no fluid):
-  // the first fastest cell of each chunk, then of the chunks in order.
-  const std::ptrdiff_t cellChunks = (std::ptrdiff_t(total) + kChunk - 1) / kChunk;
-  chunkFastest_.assign(cellChunks, {0.0, -1});
-#pragma omp parallel for schedule(static) num_threads(threads) if (cellChunks > 1)
-  for (std::ptrdiff_t c = 0; c < cellChunks; ++c) {
-    std::pair<double, std::int32_t> best{0.0, -1};
-    for (std::ptrdiff_t k = c * kChunk; k < std::min(std::ptrdiff_t(total), (c + 1) * kChunk);
-         ++k) {
-      const lb::CoveredCell& cell = cells[k];
-      const double u2 = cell.ux * cell.ux + cell.uy * cell.uy;
-      if (!cell.interior && u2 > best.first) best = {u2, std::int32_t(k)};
     }
     chunkFastest_[c] = best;
   }
+  if (!blendNow) {
+    solveVelocities(lattice, assembly, settings, cells, gravity);
+    blendVelocities(lattice, circles, cells);
+    // The first fastest cell of each chunk of cells.
+    const std::ptrdiff_t cellChunks = (std::ptrdiff_t(total) + kChunk - 1) / kChunk;
+    chunkFastest_.assign(cellChunks, {0.0, -1});
+#pragma omp parallel for schedule(static) num_threads(threads) if (cellChunks > 1)
+    for (std::ptrdiff_t c = 0; c < cellChunks; ++c) {
+      std::pair<double, std::int32_t> best{0.0, -1};
+      for (std::ptrdiff_t k = c * kChunk; k < std::min(std::ptrdiff_t(total), (c + 1) * kChunk);
+           ++k) {
+        const double u2 = cells[k].ux * cells[k].ux + cells[k].uy * cells[k].uy;
+        if (!cells[k].interior && u2 > best.first) best = {u2, std::int32_t(k)};
+      }
+      chunkFastest_[c] = best;
+    }
+  }
+  // The fastest surface that the fluid sees (interior cells move no fluid):
+  // of the chunks' fastest, the first.
   fastest_ = SolidSpeed{};
   double fastest2 = 0;
   for (const auto& [u2, c] : chunkFastest_) {
@@ -184,12 +201,29 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   }
   fastest_.mach = std::sqrt(fastest2);
   cells_ = cells.size();
-  lattice.swapCoveredCells(cells, settings.equilibriumInterior);  // ours now holds the old list
+  // Ours now holds the old list; the new one ascends by node (sortByNode).
+  lattice.swapCoveredCells(cells, settings.equilibriumInterior, true);
   times_.coverage += since(t0);
 }
 
 // Each cell's solid velocity: the coverage-weighted mean of its owners' rigid
 // velocities at the cell centre, in lattice units.
+Vec2 Coupler::cellVelocity(std::ptrdiff_t first, std::ptrdiff_t last, double epsSum,
+                           const std::vector<lb::CircleObstacle>& circles, double toLattice) const {
+  double ux = 0, uy = 0;
+  for (std::ptrdiff_t k = first; k < last; ++k) {
+    const Piece& p = pieces_[order_[k]];
+    const Vec2 v = p.owner >= 0
+                       ? Vec2(velocity_[p.owner].x(), velocity_[p.owner].y()) +
+                             spin(velocity_[p.owner].z(), p.arm)
+                       : circles[-1 - p.owner].velocity + spin(circles[-1 - p.owner].spin, p.arm);
+    const double weight = p.eps / epsSum * toLattice;
+    ux += weight * v.x();
+    uy += weight * v.y();
+  }
+  return Vec2(ux, uy);
+}
+
 void Coupler::blendVelocities(const lb::Lattice& lattice,
                               const std::vector<lb::CircleObstacle>& circles,
                               std::vector<lb::CoveredCell>& cells) const {
@@ -198,19 +232,9 @@ void Coupler::blendVelocities(const lb::Lattice& lattice,
   // Cell by cell over its pieces in a fixed order: any thread count, same sums.
 #pragma omp parallel for schedule(static) num_threads(threads_) if (count >= 16384)
   for (std::ptrdiff_t c = 0; c < count; ++c) {
-    double ux = 0, uy = 0;
-    for (std::int32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
-      const Piece& p = pieces_[order_[k]];
-      const Vec2 v = p.owner >= 0
-                         ? Vec2(velocity_[p.owner].x(), velocity_[p.owner].y()) +
-                               spin(velocity_[p.owner].z(), p.arm)
-                         : circles[-1 - p.owner].velocity + spin(circles[-1 - p.owner].spin, p.arm);
-      const double weight = p.eps / epsSum_[c] * toLattice;
-      ux += weight * v.x();
-      uy += weight * v.y();
-    }
-    cells[c].ux = ux;
-    cells[c].uy = uy;
+    const Vec2 u = cellVelocity(cellStart_[c], cellStart_[c + 1], epsSum_[c], circles, toLattice);
+    cells[c].ux = u.x();
+    cells[c].uy = u.y();
   }
 }
 
@@ -426,6 +450,8 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
 void Coupler::clear(dem::Assembly& assembly) {
   elements_.clear();
   circles_.clear();
+  open_.clear();
+  topology_ = 0;  // a lattice's versions start above 0: the next one is measured afresh
   pieces_.clear();
   order_.clear();
   cellStart_.clear();

@@ -43,7 +43,6 @@ bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int s
   rows.assign(std::size_t(hgt + 2), Row{});
   eps.clear();
   const double h = g.h, ox = g.origin.x();
-  const Vec2 half(0.5 * h, 0.5 * h);
   auto cellLo = [&](int i) { return ox + i * h; };
   auto arm = [&](int i, int b) -> Vec2 {
     return g.origin + Vec2((i + 0.5) * h, (j0 + b + 0.5) * h) - reference;
@@ -67,10 +66,26 @@ bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int s
       r.fullLo = std::max(a, r.lo), r.fullHi = std::min(z, r.hi);
     }
     r.at = eps.size();
-    for (int i = r.lo; i <= r.hi; ++i)
-      eps.push_back(i >= r.fullLo && i <= r.fullHi
-                        ? 1.0
-                        : measure(f, reference + arm(i, b) - half, h, subcells));
+    eps.resize(r.at + (r.hi - r.lo + 1), 1.0);
+    // The cells left and right of the full ones (or all, when none is full).
+    const int leftEnd = r.fullLo <= r.fullHi ? r.fullLo - 1 : r.hi;
+    const int rightStart = r.fullLo <= r.fullHi ? r.fullHi + 1 : r.hi + 1;
+    const double y0 = g.origin.y() + (j0 + b) * h;
+    if (subcells == kExact) {
+      auto ratios = [&](int first, int last) {
+        if (first > last) return;
+        double* out = eps.data() + r.at + (first - r.lo);
+        f.rowAreas(ox, y0, h, first, last, out);
+        for (int i = first; i <= last; ++i)
+          out[i - first] = std::clamp(out[i - first] / (h * h), 0.0, 1.0);
+      };
+      ratios(r.lo, leftEnd);
+      ratios(rightStart, r.hi);
+    } else {
+      for (int i = r.lo; i <= r.hi; ++i)
+        if (i <= leftEnd || i >= rightStart)
+          eps[r.at + (i - r.lo)] = measure(f, Vec2(cellLo(i), y0), h, subcells);
+    }
     auto one = [&](int i) { return eps[r.at + (i - r.lo)] >= 1; };
     r.oneLo = r.fullLo, r.oneHi = r.fullHi;
     if (r.oneLo > r.oneHi) {
@@ -96,7 +111,7 @@ bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int s
       const double e = eps[r.at + (i - r.lo)];
       if (e <= 0) continue;
       const int wi = wrap(i, g.nx, g.periodicX);
-      if (wi < 0) continue;
+      if (wi < 0 || (g.open && !g.open[std::size_t(j) * g.nx + wi])) continue;
       out.push_back({wi, j, e, arm(i, b), inner && i >= innerLo && i <= innerHi});
     }
   }
@@ -142,9 +157,13 @@ void cover(const Footprint& f, const Vec2& reference, const Grid& g, int subcell
     for (int a = 0; a < w; ++a) {
       const Vec2 centre = reference + offset(a, b);
       const double d = f.distance(centre);
+      // The cell's corner as the row-by-row pass has it; a container's cell
+      // at its image nearest the reference.
+      const Vec2 lo =
+          f.everywhere ? Vec2(centre - half) : g.origin + Vec2((i0 + a) * g.h, (j0 + b) * g.h);
       at(a, b) = d <= -halfDiagonal            ? 1.0
                  : d - f.slack >= halfDiagonal ? 0.0
-                                               : measure(f, centre - half, g.h, subcells);
+                                               : measure(f, lo, g.h, subcells);
     }
   // A container's block is the whole lattice: its ring continues periodically,
   // and beyond a wall it is solid.
@@ -160,7 +179,7 @@ void cover(const Footprint& f, const Vec2& reference, const Grid& g, int subcell
       const double e = at(a, b);
       if (e <= 0) continue;
       const int i = wrap(i0 + a, g.nx, g.periodicX), j = wrap(j0 + b, g.ny, g.periodicY);
-      if (i < 0 || j < 0) continue;
+      if (i < 0 || j < 0 || (g.open && !g.open[std::size_t(j) * g.nx + i])) continue;
       bool interior = e >= 1;
       for (int db = -1; db <= 1 && interior; ++db)
         for (int da = -1; da <= 1 && interior; ++da) interior = at(a + da, b + db) >= 1;

@@ -32,6 +32,11 @@ class CircleFootprint final : public Footprint {
     const double a = geometry::circleRectangleArea(c_, r_, lo, lo + Vec2(h, h));
     return outside_ ? h * h - a : a;
   }
+  void rowAreas(double x0, double y0, double h, int first, int last, double* out) const override {
+    if (outside_) return Footprint::rowAreas(x0, y0, h, first, last, out);
+    const geometry::DiscBand band(c_, r_, y0, y0 + h);
+    for (int i = first; i <= last; ++i) out[i - first] = band.area(x0 + i * h, x0 + (i + 1) * h);
+  }
   bool band(double y0, double y1, Band& out) const override {
     if (outside_) return false;
     const double d0 = y0 - c_.y(), d1 = y1 - c_.y();

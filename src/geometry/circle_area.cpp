@@ -95,3 +95,64 @@ double circleRectangleArea(const Vec2& c, double r, const Vec2& lo, const Vec2& 
 }
 
 }  // namespace sf::geometry
+
+namespace sf::geometry {
+
+// The disc's height inside the band at t = x - cx is
+//   clamp(s, y0 - cy, y1 - cy) + clamp(s, -(y1 - cy), -(y0 - cy)),
+// zero where the disc misses the band; each term is constant or s(t) between
+// the breakpoints where s meets its bounds.
+DiscBand::DiscBand(const Vec2& c, double r, double y0, double y1) : cx_(c.x()), r_(r) {
+  const double p0 = y0 - c.y(), p1 = y1 - c.y();
+  above_ = clamped(p0, p1);
+  below_ = clamped(-p1, -p0);
+}
+
+double DiscBand::s(double t) const {
+  return std::sqrt(std::max(0.0, (r_ - t) * (r_ + t)));
+}
+
+DiscBand::Clamped DiscBand::clamped(double lo, double hi) const {
+  Clamped c{lo, hi, r_, 0.0};
+  if (lo > 0 && lo < r_) c.tl = s(lo);
+  if (hi > 0 && hi < r_) c.th = s(hi);
+  return c;
+}
+
+// (q s_q - p s_p + r^2 (asin(q/r) - asin(p/r))) / 2, each difference written
+// as (q - p) times a well-conditioned factor: no cancellation however close
+// p and q are, or however large the disc is against the cell.
+double DiscBand::arc(double p, double q, double sp, double sq) const {
+  if (!(q > p)) return 0.0;
+  const double d = q - p, sum = sp + sq;
+  if (!(sum > 0)) return 0.0;             // p = q = +-r
+  const double k = (p + q) / sum;         // (s_p - s_q) / (q - p)
+  const double chord = d * (sq - p * k);  // q s_q - p s_p
+  const double angle = std::asin(std::clamp(d * (sp + p * k) / (r_ * r_), -1.0, 1.0));
+  return 0.5 * (chord + r_ * r_ * angle);
+}
+
+double DiscBand::part(const Clamped& c, double a, double b) const {
+  if (c.hi <= 0) return c.hi * (b - a);
+  if (c.lo >= r_) return c.lo * (b - a);
+  auto overlap = [&](double lo, double hi) {
+    return std::max(0.0, std::min(b, hi) - std::max(a, lo));
+  };
+  // lo on [-r, -tl] and [tl, r], s on [-tl, -th] and [th, tl], hi on [-th, th].
+  double sum = c.lo * (overlap(-r_, -c.tl) + overlap(c.tl, r_)) + c.hi * overlap(-c.th, c.th);
+  const double sTl = c.tl < r_ ? c.lo : 0.0, sTh = c.th > 0 ? c.hi : r_;  // s at the breakpoints
+  auto end = [&](double t, double at, double known) { return t == at ? known : s(t); };
+  if (const double p = std::max(a, -c.tl), q = std::min(b, -c.th); q > p)
+    sum += arc(p, q, end(p, -c.tl, sTl), end(q, -c.th, sTh));
+  if (const double p = std::max(a, c.th), q = std::min(b, c.tl); q > p)
+    sum += arc(p, q, end(p, c.th, sTh), end(q, c.tl, sTl));
+  return sum;
+}
+
+double DiscBand::area(double xa, double xb) const {
+  const double a = std::clamp(xa - cx_, -r_, r_), b = std::clamp(xb - cx_, -r_, r_);
+  if (!(b > a)) return 0.0;
+  return std::max(0.0, part(above_, a, b) + part(below_, a, b));
+}
+
+}  // namespace sf::geometry

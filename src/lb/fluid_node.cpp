@@ -136,7 +136,7 @@ std::size_t FluidNode::count() const {
   return n;
 }
 
-void FluidNode::exclude(const std::vector<CoveredCell>& cells) {
+void FluidNode::exclude(const std::vector<CoveredCell>& cells, bool inNodeOrder) {
   cut_.clear();
   blocks_.clear();
   blockCells_ = 0;
@@ -144,7 +144,8 @@ void FluidNode::exclude(const std::vector<CoveredCell>& cells) {
   if (!useCut_) return;
   const std::size_t n = cells.size();
   bool sorted = true;
-  for (std::size_t k = 1; k < n && sorted; ++k) sorted = cells[k - 1].node < cells[k].node;
+  for (std::size_t k = 1; k < n && sorted && !inNodeOrder; ++k)
+    sorted = cells[k - 1].node < cells[k].node;
   if (sorted && !spans.empty()) {
     // The sweep cuts the spans round the cells as it goes; here only its
     // blocks, of about kSweepNodes nodes cut where a span starts, and the

@@ -406,11 +406,12 @@ void Lattice::setCoveredCells(std::vector<CoveredCell> cells, bool equilibriumIn
   swapCoveredCells(cells, equilibriumInterior);
 }
 
-void Lattice::swapCoveredCells(std::vector<CoveredCell>& cells, bool equilibriumInterior) {
+void Lattice::swapCoveredCells(std::vector<CoveredCell>& cells, bool equilibriumInterior,
+                               bool inNodeOrder) {
   covered_.cells.swap(cells);
   covered_.equilibriumInterior = equilibriumInterior;
   covered_.exchange.assign(covered_.cells.size(), Vec2::Zero());
-  static_cast<FluidNode&>(*kinds_.front()).exclude(covered_.cells);
+  static_cast<FluidNode&>(*kinds_.front()).exclude(covered_.cells, inNodeOrder);
 }
 
 void Lattice::pulledMoments(const std::vector<CoveredCell>& cells, std::vector<double>& rho,

@@ -74,6 +74,11 @@ class Coupler {
     bool outside = false;
     std::vector<CellCover> cells;
   };
+  // The solid velocity of the cell whose pieces are order_[first, last) and
+  // whose coverages sum to epsSum, lattice units: the coverage-weighted mean of
+  // its owners' rigid velocities at the cell centre.
+  Vec2 cellVelocity(std::ptrdiff_t first, std::ptrdiff_t last, double epsSum,
+                    const std::vector<lb::CircleObstacle>& circles, double toLattice) const;
   void blendVelocities(const lb::Lattice& lattice, const std::vector<lb::CircleObstacle>& circles,
                        std::vector<lb::CoveredCell>& cells) const;
   void solveVelocities(const lb::Lattice& lattice, const dem::Assembly& assembly,
@@ -87,6 +92,7 @@ class Coupler {
              double radius, bool outside) const;
 
   std::vector<Cached> elements_, circles_;
+  std::vector<std::uint8_t> open_;       // per cell: bulk fluid (Grid::open), per topology
   std::vector<Piece> pieces_;            // solid by solid, each solid's in its own order
   std::vector<std::size_t> pieceStart_;  // per solid (elements, then circles): first piece
   std::vector<std::int32_t> order_;      // pieces in node order

@@ -17,6 +17,9 @@ struct Grid {
   double h = 1.0;
   int nx = 0, ny = 0;
   bool periodicX = false, periodicY = false;
+  // Per cell (index j * nx + i), nonzero where coverage counts (bulk fluid);
+  // every cell when null.
+  const std::uint8_t* open = nullptr;
 };
 
 // How a solid-ratio is measured: subcells 0 means exact areas, else the count

@@ -20,6 +20,12 @@ class Footprint {
   virtual bool inside(const Vec2& x) const = 0;
   // Area of the solid inside the square [lo, lo + h]^2.
   virtual double cellArea(const Vec2& lo, double h) const = 0;
+  // Areas of the cells [x0 + i h, x0 + (i + 1) h] x [y0, y0 + h] of one row,
+  // i = first..last, into out[i - first]: cellArea cell by cell, unless a shape
+  // has a faster way for a whole row.
+  virtual void rowAreas(double x0, double y0, double h, int first, int last, double* out) const {
+    for (int i = first; i <= last; ++i) out[i - first] = cellArea(Vec2(x0 + i * h, y0), h);
+  }
   // For a convex solid whose `inside` is exact: within the band y0 <= y <= y1,
   // the x-interval it touches [lo, hi] and the x-interval [fullLo, fullHi]
   // where it holds the whole band (an empty one has lo > hi). Lets the pass

@@ -9,3 +9,34 @@ namespace sf::geometry {
 double circleRectangleArea(const Vec2& c, double r, const Vec2& lo, const Vec2& hi);
 
 }  // namespace sf::geometry
+
+namespace sf::geometry {
+
+// The disc's area in cells of one horizontal band y0 <= y <= y1: its height
+// in the band is a constant or the circle's half-chord between breakpoints
+// found once for the band, so a cell costs one or two arcsines (and the same
+// relative accuracy as circleRectangleArea, whatever the disc's size).
+class DiscBand {
+ public:
+  DiscBand(const Vec2& c, double r, double y0, double y1);
+  // Area of the disc in [xa, xb] x [y0, y1].
+  double area(double xa, double xb) const;
+
+ private:
+  // clamp(s(t), lo, hi) with s(t) = sqrt(r^2 - t^2), t = x - cx: the band's
+  // part above the centre line (lo, hi = y0 - cy, y1 - cy) or below it
+  // (-(y1 - cy), -(y0 - cy)); s < lo beyond |t| = tl and s > hi within th.
+  struct Clamped {
+    double lo, hi, tl, th;
+  };
+  Clamped clamped(double lo, double hi) const;
+  double part(const Clamped& c, double a, double b) const;
+  // Integral of s over [p, q], one side of the centre, s known at both ends.
+  double arc(double p, double q, double sp, double sq) const;
+  double s(double t) const;
+
+  double cx_, r_;
+  Clamped above_, below_;
+};
+
+}  // namespace sf::geometry

@@ -91,7 +91,10 @@ class Lattice {
   // see CoveredNode), and the momentum each exchanged in the last step.
   void setCoveredCells(std::vector<CoveredCell> cells, bool equilibriumInterior);
   // The same, handing the previous list back in `cells` for reuse.
-  void swapCoveredCells(std::vector<CoveredCell>& cells, bool equilibriumInterior);
+  // `inNodeOrder`: the caller vouches that the nodes ascend strictly (the
+  // coupler's list does), which spares a pass over the list.
+  void swapCoveredCells(std::vector<CoveredCell>& cells, bool equilibriumInterior,
+                        bool inNodeOrder = false);
   const std::vector<CoveredCell>& coveredCells() const { return covered_.cells; }
   // Density and first moment (lattice units) of the populations that the
   // given cells will pull in the next step, before any collision.

@@ -81,7 +81,8 @@ class FluidNode final : public Node {
   StepStats streamCollide(const StepContext& ctx) const override;
   // Leaves the covered cells (which their own pass computes) out of the spans
   // until the next call: the bulk then does no work twice.
-  void exclude(const std::vector<CoveredCell>& cells);
+  // `inNodeOrder`: known to ascend strictly, not checked.
+  void exclude(const std::vector<CoveredCell>& cells, bool inNodeOrder = false);
   // True when the cells last excluded are in node order: the bulk and the
   // covered cells can then run in one sweep (streamCollideWith).
   bool sweepsWith(const CoveredNode& covered) const;
