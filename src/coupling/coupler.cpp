@@ -123,21 +123,14 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   velocity_.resize(n);
   for (int s = 0; s < n; ++s) velocity_[s] = Vec3(b.v[s].x(), b.v[s].y(), b.w[s]);
   const double toLattice = lattice.params().dt / lattice.params().h;
-  // The cells: where the sorted nodes change, counted chunk by chunk and then
-  // filled, each by the chunk its first piece lies in (any thread count, the
-  // same list). Explicitly coupled, each cell gets its solid velocity at once
+  // The cells: where the sorted nodes change (sortByNode counted them chunk by
+  // chunk), each filled by the chunk its first piece lies in (any thread
+  // count, the same list). Explicitly coupled, each cell gets its solid velocity at once
   // and each chunk notes its first fastest cell.
   std::vector<lb::CoveredCell>& cells = cellsBuffer_;  // reused: no fresh pages per step
   const std::ptrdiff_t count = std::ptrdiff_t(order_.size());
   const std::ptrdiff_t chunks = (count + kChunk - 1) / kChunk;
   auto starts = [&](std::ptrdiff_t k) { return k == 0 || keys_[k] != keys_[k - 1]; };
-  chunkCells_.assign(chunks + 1, 0);
-#pragma omp parallel for schedule(static) num_threads(threads) if (chunks > 1)
-  for (std::ptrdiff_t c = 0; c < chunks; ++c) {
-    std::int32_t m = 0;  // a local: neighbouring counters share a cache line
-    for (std::ptrdiff_t k = c * kChunk; k < std::min(count, (c + 1) * kChunk); ++k) m += starts(k);
-    chunkCells_[c + 1] = m;
-  }
   for (std::ptrdiff_t c = 0; c < chunks; ++c) chunkCells_[c + 1] += chunkCells_[c];
   const std::size_t total = chunkCells_[chunks];
   cells.resize(total), epsSum_.resize(total), cellStart_.resize(total + 1);
@@ -208,8 +201,9 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
 
 // Each cell's solid velocity: the coverage-weighted mean of its owners' rigid
 // velocities at the cell centre, in lattice units.
-Vec2 Coupler::cellVelocity(std::ptrdiff_t first, std::ptrdiff_t last, double epsSum,
-                           const std::vector<lb::CircleObstacle>& circles, double toLattice) const {
+[[gnu::always_inline]] inline Vec2 Coupler::cellVelocity(
+    std::ptrdiff_t first, std::ptrdiff_t last, double epsSum,
+    const std::vector<lb::CircleObstacle>& circles, double toLattice) const {
   double ux = 0, uy = 0;
   for (std::ptrdiff_t k = first; k < last; ++k) {
     const Piece& p = pieces_[order_[k]];
@@ -285,6 +279,14 @@ void Coupler::sortByNode() {
   const std::vector<std::int32_t>& first = runFirst_;
   radixSort(runKeys_, runOrder_);
   sortedKeys_.resize(count), order_.resize(count);
+  // Alongside, per chunk of kChunk sorted pieces, how many start a cell.
+  chunkCells_.assign((count + kChunk - 1) / kChunk + 1, 0);
+  auto allStart = [&](std::size_t a, std::size_t b) {
+    for (std::size_t e; a < b; a = e) {
+      e = std::min<std::size_t>(b, (a / kChunk + 1) * kChunk);
+      chunkCells_[a / kChunk + 1] += std::int32_t(e - a);
+    }
+  };
   std::size_t out = 0;
   const std::size_t runs = runOrder_.size();
   for (std::size_t r = 0; r < runs;) {
@@ -297,8 +299,10 @@ void Coupler::sortByNode() {
     std::uint32_t reach = last(r);
     while (end < runs && runKeys_[end] <= reach) reach = std::max(reach, last(end++));
     if (end == r + 1) {
+      const std::size_t from = out;
       for (std::int32_t k = first[runOrder_[r]]; k < first[runOrder_[r] + 1]; ++k)
         sortedKeys_[out] = keys_[k], order_[out++] = k;
+      allStart(from, out);
     } else {
       const std::size_t from = out;
       for (std::size_t q = r; q < end; ++q)
@@ -307,7 +311,10 @@ void Coupler::sortByNode() {
       std::sort(order_.begin() + from, order_.begin() + out, [&](std::int32_t x, std::int32_t y) {
         return keys_[x] != keys_[y] ? keys_[x] < keys_[y] : x < y;
       });
-      for (std::size_t q = from; q < out; ++q) sortedKeys_[q] = keys_[order_[q]];
+      for (std::size_t q = from; q < out; ++q) {
+        sortedKeys_[q] = keys_[order_[q]];
+        chunkCells_[q / kChunk + 1] += q == from || sortedKeys_[q] != sortedKeys_[q - 1];
+      }
     }
     r = end;
   }

@@ -101,7 +101,7 @@ class Coupler {
   std::vector<std::uint32_t> keysScratch_, sortedKeys_, runKeys_;
   std::vector<std::int32_t> runFirst_, runOrder_;  // runs of consecutive nodes
   static constexpr std::ptrdiff_t kChunk = 8192;   // pieces or cells a parallel task takes
-  std::vector<std::int32_t> chunkCells_;           // per chunk of pieces: cells before it
+  std::vector<std::int32_t> chunkCells_;           // per chunk of sorted pieces: cells before it
   std::vector<std::pair<double, std::int32_t>> chunkFastest_;  // per chunk of cells: |u|^2, cell
   std::vector<std::int32_t> cellStart_;  // per covered cell: its first entry in order_
   std::vector<double> epsSum_;           // per covered cell
