@@ -4,7 +4,6 @@
 // order so the result does not depend on the thread count.
 #include <algorithm>
 #include <chrono>
-#include <stdexcept>
 #include <vector>
 
 #include "sandflow/lb/kernel_isa.hpp"
@@ -88,11 +87,8 @@ StepStats sweep(const StepContext& ctx, const std::vector<FluidNode::Span>& span
   const std::ptrdiff_t n = std::ptrdiff_t(blocks.size());
   std::vector<StepStats> partial(blocks.size());
   std::vector<double> seconds(blocks.size(), 0.0);
-  const std::ptrdiff_t nodes = std::ptrdiff_t(covered.cells.size()) + [&] {
-    std::ptrdiff_t m = 0;
-    for (const FluidNode::Span& s : spans) m += s.length;
-    return m;
-  }();
+  std::ptrdiff_t nodes = 0;
+  for (const FluidNode::Span& s : spans) nodes += s.length;
   covered.exchange.resize(covered.cells.size());
   const bool parallel = nodes >= kParallelNodes;
 #pragma omp parallel for schedule(static) num_threads(ctx.threads) if (parallel)
@@ -100,22 +96,13 @@ StepStats sweep(const StepContext& ctx, const std::vector<FluidNode::Span>& span
     const std::int32_t span0 = b == 0 ? 0 : blocks[b - 1].spanEnd;
     const std::int32_t cell0 = b == 0 ? 0 : blocks[b - 1].cellEnd;
     StepStats stats;
-    // The block's spans less its covered cells.
-    std::int32_t c = cell0;
-    const std::vector<CoveredCell>& cells = covered.cells;
-    for (std::int32_t k = span0; k < blocks[b].spanEnd; ++k) {
-      std::ptrdiff_t at = spans[k].first;
-      const std::ptrdiff_t end = at + spans[k].length;
-      while (c < blocks[b].cellEnd && cells[c].node < at) ++c;
-      for (; c < blocks[b].cellEnd && cells[c].node < end; ++c) {
-        if (cells[c].node > at) stats.merge(runSpan<C, S>(ctx, at, cells[c].node - at));
-        at = std::max<std::ptrdiff_t>(at, cells[c].node + 1);
-      }
-      if (end > at) stats.merge(runSpan<C, S>(ctx, at, end - at));
-    }
+    // The block's spans whole, then its covered cells over them: the mass is
+    // the spans', which hold the covered nodes too.
+    for (std::int32_t k = span0; k < blocks[b].spanEnd; ++k)
+      stats.merge(runSpan<C, S>(ctx, spans[k].first, spans[k].length));
     if (blocks[b].cellEnd > cell0) {
       const auto t0 = Clock::now();
-      stats.merge(covered.run(ctx, cell0, blocks[b].cellEnd));
+      stats.maxU2 = std::max(stats.maxU2, covered.run(ctx, cell0, blocks[b].cellEnd).maxU2);
       seconds[b] = std::chrono::duration<double>(Clock::now() - t0).count();
     }
     partial[b] = stats;
@@ -136,56 +123,34 @@ std::size_t FluidNode::count() const {
   return n;
 }
 
-void FluidNode::exclude(const std::vector<CoveredCell>& cells, bool inNodeOrder) {
-  cut_.clear();
+void FluidNode::planSweep(const std::vector<CoveredCell>& cells, bool inNodeOrder) {
   blocks_.clear();
   blockCells_ = 0;
-  useCut_ = !cells.empty();
-  if (!useCut_) return;
   const std::size_t n = cells.size();
   bool sorted = true;
   for (std::size_t k = 1; k < n && sorted && !inNodeOrder; ++k)
     sorted = cells[k - 1].node < cells[k].node;
-  if (sorted && !spans.empty()) {
-    // The sweep cuts the spans round the cells as it goes; here only its
-    // blocks, of about kSweepNodes nodes cut where a span starts, and the
-    // cells in each (those before the next block's first span).
-    constexpr std::ptrdiff_t kSweepNodes = 8192;
-    std::ptrdiff_t nodes = 0;
-    auto c = cells.begin();
-    for (std::size_t k = 0; k < spans.size(); ++k) {
-      nodes += spans[k].length;
-      const bool last = k + 1 == spans.size();
-      if (nodes < kSweepNodes && !last) continue;
-      c = last
-              ? cells.end()
-              : std::lower_bound(c, cells.end(), spans[k + 1].first,
-                                 [](const CoveredCell& x, std::ptrdiff_t v) { return x.node < v; });
-      blocks_.push_back({std::int32_t(k + 1), std::int32_t(c - cells.begin())});
-      nodes = 0;
-    }
-    blockCells_ = n;
-    return;
+  if (n == 0 || !sorted || spans.empty()) return;
+  // Blocks of about kSweepNodes nodes, cut where a span starts, and the cells
+  // in each (those before the next block's first span).
+  constexpr std::ptrdiff_t kSweepNodes = 8192;
+  std::ptrdiff_t nodes = 0;
+  auto c = cells.begin();
+  for (std::size_t k = 0; k < spans.size(); ++k) {
+    nodes += spans[k].length;
+    const bool last = k + 1 == spans.size();
+    if (nodes < kSweepNodes && !last) continue;
+    c = last ? cells.end()
+             : std::lower_bound(c, cells.end(), spans[k + 1].first,
+                                [](const CoveredCell& x, std::ptrdiff_t v) { return x.node < v; });
+    blocks_.push_back({std::int32_t(k + 1), std::int32_t(c - cells.begin())});
+    nodes = 0;
   }
-  order_.resize(n);
-  for (std::size_t k = 0; k < n; ++k) order_[k] = cells[k].node;
-  std::sort(order_.begin(), order_.end());
-  // Spans and nodes both ascend: one merge cuts every span around its nodes.
-  std::size_t c = 0;
-  for (const Span& s : spans) {
-    std::ptrdiff_t at = s.first;
-    const std::ptrdiff_t end = s.first + s.length;
-    while (c < n && order_[c] < at) ++c;
-    for (; c < n && order_[c] < end; ++c) {
-      if (order_[c] > at) cut_.push_back({at, std::int32_t(order_[c] - at)});
-      at = std::max<std::ptrdiff_t>(at, order_[c] + 1);
-    }
-    if (end > at) cut_.push_back({at, std::int32_t(end - at)});
-  }
+  blockCells_ = n;
 }
 
 bool FluidNode::sweepsWith(const CoveredNode& covered) const {
-  return useCut_ && !blocks_.empty() && blockCells_ == covered.cells.size();
+  return !blocks_.empty() && blockCells_ == covered.cells.size();
 }
 
 StepStats FluidNode::streamCollideWith(const StepContext& ctx, const CoveredNode& covered,
@@ -203,9 +168,6 @@ StepStats FluidNode::streamCollideWith(const StepContext& ctx, const CoveredNode
 }
 
 StepStats FluidNode::streamCollide(const StepContext& ctx) const {
-  if (!blocks_.empty())  // the spans are cut only as the sweep goes
-    throw std::logic_error("FluidNode: covered cells in node order need streamCollideWith");
-  const std::vector<Span>& spans = useCut_ ? cut_ : this->spans;
   const bool guo = ctx.forceScheme == ForceScheme::guo;
   if (ctx.collision == Collision::bgk)
     return guo ? runSpans<Collision::bgk, ForceScheme::guo>(ctx, spans)

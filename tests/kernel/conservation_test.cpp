@@ -170,11 +170,11 @@ TEST(Lattice, RefusesUnstableAndInconsistentDefinitions) {
   EXPECT_THROW(lb::resolve(def), Error);  // beyond memory, refused before allocating
 }
 
-// Covered cells leave the bulk spans and their own pass computes them. With
-// eps = 0 that pass is plain BGK, so a lattice with covered cells given out of
-// order and twice must follow the plain one to round-off: a cell computed by
-// neither pass, or by both in the wrong order, would not.
-TEST(Covered, CellsLeftOutOfTheBulkAreComputedByTheirOwnPass) {
+// The bulk computes every fluid node and the covered pass its cells again,
+// over that. With eps = 0 that pass is plain BGK, so a lattice with covered
+// cells given out of order and twice must follow the plain one to round-off:
+// cells the pass wrote wrongly, or a mass counted twice, would not.
+TEST(Covered, CellsWithZeroRatioFollowThePlainLattice) {
   lb::LatticeDef def = periodicBox(32);
   def.forcing = Vec2(1e-6, 2e-7);
   lb::Lattice plain(lb::resolve(def)), covered(lb::resolve(def));

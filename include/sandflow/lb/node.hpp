@@ -78,26 +78,25 @@ class FluidNode final : public Node {
   std::vector<Span> spans;
   const char* name() const override { return "fluid"; }
   std::size_t count() const override;
+  // Every fluid node, covered ones too: the covered pass then writes those
+  // again, while their rows are in cache (streamCollideWith).
   StepStats streamCollide(const StepContext& ctx) const override;
-  // Leaves the covered cells (which their own pass computes) out of the spans
-  // until the next call: the bulk then does no work twice.
+  // Notes where the covered cells fall among the spans, for the sweep; cells
+  // out of node order get no sweep (their pass runs after the bulk).
   // `inNodeOrder`: known to ascend strictly, not checked.
-  void exclude(const std::vector<CoveredCell>& cells, bool inNodeOrder = false);
-  // True when the cells last excluded are in node order: the bulk and the
-  // covered cells can then run in one sweep (streamCollideWith).
+  void planSweep(const std::vector<CoveredCell>& cells, bool inNodeOrder = false);
+  // True when the cells last planned for can run in the bulk's sweep.
   bool sweepsWith(const CoveredNode& covered) const;
-  // The bulk and the covered cells block by block, each block's covered cells
-  // right after its spans, while the rows they pull from are in cache. Adds
-  // the thread-seconds spent in covered cells to `coveredSeconds`.
+  // The bulk and the covered cells block by block: each block's spans whole,
+  // then its covered cells over them, while the rows they pull from are in
+  // cache. The mass is the spans' (which include the covered nodes). Adds the
+  // thread-seconds spent in covered cells to `coveredSeconds`.
   StepStats streamCollideWith(const StepContext& ctx, const CoveredNode& covered,
                               double& coveredSeconds) const;
 
  private:
-  std::vector<Span> cut_;  // the spans less covered cells given out of node order
-  bool useCut_ = false;
-  std::vector<Block> blocks_;  // of spans, when the covered cells are in node order
+  std::vector<Block> blocks_;  // of spans, for covered cells in node order
   std::size_t blockCells_ = 0;
-  std::vector<std::int64_t> order_;  // scratch: covered nodes in order
 };
 
 // Slot copies f[dst] = f[src] + add, evaluated after the swap. One form serves
@@ -131,8 +130,9 @@ class SlipNode final : public LinkNode {
 };
 
 // Cells covered by moving solids (physics.md §2, Noble & Torczynski): a short
-// list rebuilt every step and left out of the bulk spans. This pass computes
-// them from the pulled populations with the partially-saturated operator
+// list rebuilt every step. The bulk computes them as plain fluid; this pass
+// then computes them again, over that, from the pulled populations with the
+// partially-saturated operator
 //   f' = f + (1 - B) (collide(f) - f) + B (Omega^s + S),
 //   Omega^s_i = f_-i - f_i + f_i^eq(rho, u_s) - f_-i^eq(rho, u),  S_i = 3 w_i e_i.F,
 // and records the momentum B sum_i Omega^s_i e_i it gave the fluid. Interior
