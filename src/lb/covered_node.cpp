@@ -75,19 +75,6 @@ SF_KERNEL_CLONES StepStats runBlock(const StepContext& ctx, const CoveredNode& n
   return stats;
 }
 
-template <Collision C, ForceScheme S>
-StepStats runAll(const StepContext& ctx, const CoveredNode& node) {
-  const std::ptrdiff_t n = std::ptrdiff_t(node.cells.size());
-  const std::ptrdiff_t blocks = (n + kBlock - 1) / kBlock;
-  std::vector<StepStats> partial(blocks);
-#pragma omp parallel for schedule(static) num_threads(ctx.threads) if (n >= kParallelNodes)
-  for (std::ptrdiff_t b = 0; b < blocks; ++b)
-    partial[b] = runBlock<C, S>(ctx, node, b * kBlock, std::min(n, (b + 1) * kBlock));
-  StepStats total;
-  for (const StepStats& s : partial) total.merge(s);
-  return total;
-}
-
 }  // namespace
 
 StepStats CoveredNode::run(const StepContext& ctx, std::ptrdiff_t first,
@@ -102,13 +89,15 @@ StepStats CoveredNode::run(const StepContext& ctx, std::ptrdiff_t first,
 
 StepStats CoveredNode::streamCollide(const StepContext& ctx) const {
   exchange.resize(cells.size());
-  if (cells.empty()) return {};
-  const bool guo = ctx.forceScheme == ForceScheme::guo;
-  if (ctx.collision == Collision::bgk)
-    return guo ? runAll<Collision::bgk, ForceScheme::guo>(ctx, *this)
-               : runAll<Collision::bgk, ForceScheme::nodal>(ctx, *this);
-  return guo ? runAll<Collision::trt, ForceScheme::guo>(ctx, *this)
-             : runAll<Collision::trt, ForceScheme::nodal>(ctx, *this);
+  const std::ptrdiff_t n = std::ptrdiff_t(cells.size());
+  const std::ptrdiff_t blocks = (n + kBlock - 1) / kBlock;
+  std::vector<StepStats> partial(blocks);
+#pragma omp parallel for schedule(static) num_threads(ctx.threads) if (n >= kParallelNodes)
+  for (std::ptrdiff_t b = 0; b < blocks; ++b)
+    partial[b] = run(ctx, b * kBlock, std::min(n, (b + 1) * kBlock));
+  StepStats total;
+  for (const StepStats& s : partial) total.merge(s);
+  return total;
 }
 
 }  // namespace sf::lb
