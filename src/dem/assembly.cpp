@@ -5,6 +5,8 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "contact_force.hpp"
+#include "integrate.hpp"
 #include "sandflow/core/error.hpp"
 
 namespace sf::dem {
@@ -114,8 +116,14 @@ void Assembly::setPlateStress(int id, double stress) {
 // specimen). A faster servo fights the contact dashpots: the plate's own speed
 // comes back as damping force and the loop rings.
 void Assembly::servoPlates(double dt) {
-  for (int s = 0; s < bodies_.size(); ++s) {
-    if (std::isnan(bodies_.stress[s])) continue;
+  if (platesAt_ != generation_) {
+    plates_.clear();
+    for (int s = 0; s < bodies_.size(); ++s)
+      if (!std::isnan(bodies_.stress[s])) plates_.push_back(s);
+    platesAt_ = generation_;
+  }
+  for (int s : plates_) {
+    if (std::isnan(bodies_.stress[s])) continue;  // servo removed since
     const auto& wall = static_cast<const Wall&>(*bodies_.shape[s]);
     const Vec2 inward(-std::sin(bodies_.angle[s]), std::cos(bodies_.angle[s]));
     double load = 0, stiffness = 0;
@@ -206,12 +214,19 @@ Vec2 Assembly::momentum() const {
 void Assembly::updatePairs() {
   const int n = bodies_.size();
   bool rebuild = !pairsValid_ || int(builtAt_.size()) != n;
-  if (!rebuild)
+  if (!rebuild) {
+    const Vec2 *x = bodies_.x.data(), *x0 = builtAt_.data();
+    const double *angle = bodies_.angle.data(), *angle0 = builtAngle_.data(),
+                 *reach = bodies_.reach.data();
+    const double half = 0.5 * skin_;
     for (int s = 0; s < n && !rebuild; ++s) {
-      const double moved = (bodies_.x[s] - builtAt_[s]).norm() +
-                           bodies_.reach[s] * std::abs(bodies_.angle[s] - builtAngle_[s]);
-      rebuild = moved > 0.5 * skin_;
+      const Vec2 d = x[s] - x0[s];
+      const double turn = reach[s] * std::abs(angle[s] - angle0[s]);
+      // |d| <= |dx| + |dy|: the square root only near the threshold.
+      if (std::abs(d.x()) + std::abs(d.y()) + turn <= half) continue;
+      rebuild = d.norm() + turn > half;
     }
+  }
   if (!rebuild) return;
 
   double smallest = std::numeric_limits<double>::infinity();
@@ -240,7 +255,8 @@ void Assembly::updatePairs() {
     const bool immovable = bodies_.invMass[a] == 0 && bodies_.invInertia[a] == 0 &&
                            bodies_.invMass[b] == 0 && bodies_.invInertia[b] == 0;
     if (immovable) continue;
-    Contact c{a, b, bodies_.id[a], bodies_.id[b]};
+    Contact c{a, b};
+    c.idA = bodies_.id[a], c.idB = bodies_.id[b];
     c.discs =
         bodies_.shape[a]->type() == ShapeType::disc && bodies_.shape[b]->type() == ShapeType::disc;
     if (slotsMoved_) {
@@ -257,6 +273,7 @@ void Assembly::updatePairs() {
     next.push_back(c);
   }
   contacts_.swap(next);
+  refreshLaws(true);
   slotsMoved_ = false;
   builtAt_ = bodies_.x;
   builtAngle_ = bodies_.angle;
@@ -264,127 +281,120 @@ void Assembly::updatePairs() {
   ++builds_;
 }
 
+void Assembly::prepareContact(Contact& c) const {
+  const Bodies& b = bodies_;
+  const int i = c.a, j = c.b, nm = materials_.size();
+  c.law = b.material[i] * nm + b.material[j];
+  const PairLaw& law = laws_[c.law];
+  // The damping coefficient depends on the masses and materials only: 2 zeta
+  // sqrt(m_eff kn) for the linear law, 2 zeta sqrt(m_eff) for Hertz, whose kn
+  // changes with the overlap.
+  const double meff = 1.0 / (b.invMass[i] + b.invMass[j]);
+  c.damping = law.damping >= 0 ? law.damping
+                               : 2.0 * law.zeta * std::sqrt(meff * (law.hertz ? 1.0 : law.kn));
+  c.size = std::min(b.extent[i], b.extent[j]);
+  c.radius = effectiveRadius(i, j);
+}
+
+void Assembly::refreshLaws(bool newContacts) {
+  const int nm = materials_.size();
+  const bool materialsChanged =
+      dampingMaterials_ != materials_.version() || int(laws_.size()) != nm * nm;
+  if (!newContacts && !materialsChanged && dampingAt_ == generation_) return;
+  if (materialsChanged) {
+    laws_.resize(nm * nm);
+    for (int i = 0; i < nm; ++i)
+      for (int j = 0; j < nm; ++j) laws_[i * nm + j] = combine(materials_[i], materials_[j]);
+  }
+  for (Contact& c : contacts_) prepareContact(c);
+  dampingAt_ = generation_, dampingMaterials_ = materials_.version();
+}
+
 void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocity) {
   Bodies& b = bodies_;
   const int n = b.size();
   const std::vector<Vec2>& vel = useHalfVelocity ? b.vHalf : b.v;
   const std::vector<double>& omega = useHalfVelocity ? b.wHalf : b.w;
-  for (int s = 0; s < n; ++s) {
-    b.force[s] = b.appliedForce[s] + b.mass[s] * (gravity + b.acceleration[s]) + b.fluidForce[s] +
-                 b.buoyancy[s];
-    b.torque[s] = b.appliedTorque[s] + b.fluidTorque[s];
+  {
+    Vec2* __restrict f = b.force.data();
+    double* __restrict t = b.torque.data();
+    const Vec2 *applied = b.appliedForce.data(), *own = b.acceleration.data(),
+               *fluid = b.fluidForce.data(), *buoyancy = b.buoyancy.data();
+    const double *mass = b.mass.data(), *appliedTorque = b.appliedTorque.data(),
+                 *fluidTorque = b.fluidTorque.data();
+    for (int s = 0; s < n; ++s) {
+      f[s] = applied[s] + mass[s] * (gravity + own[s]) + fluid[s] + buoyancy[s];
+      t[s] = appliedTorque[s] + fluidTorque[s];
+    }
   }
-
-  const int nm = materials_.size();
-  std::vector<PairLaw> laws(nm * nm);
-  for (int i = 0; i < nm; ++i)
-    for (int j = 0; j < nm; ++j) laws[i * nm + j] = combine(materials_[i], materials_[j]);
-
+  refreshLaws();
+  const detail::ContactInputs in{b.x.data(),   b.angle.data(), b.reach.data(), vel.data(),
+                                 omega.data(), b.shape.data(), laws_.data(),   dt};
   const std::ptrdiff_t nc = std::ptrdiff_t(contacts_.size());
-  if (dampingAt_ != generation_ || dampingMaterials_ != materials_.version()) {
-    for (Contact& c : contacts_) c.damping = -1;
-    dampingAt_ = generation_, dampingMaterials_ = materials_.version();
-  }
-  std::vector<Vec2>& newShear = scratchShear_;
-  std::vector<char>& excessive = scratchFlag_;
-  newShear.resize(nc);
-  excessive.assign(nc, 0);
-// Few contacts stay on one thread: a parallel region would cost more.
-#pragma omp parallel for schedule(static) num_threads(threads) if (nc >= 512)
-  for (std::ptrdiff_t k = 0; k < nc; ++k) {
-    Contact& c = contacts_[k];
-    const int i = c.a, j = c.b;
-    Manifold m;
-    // Disc pairs skip the dispatch (reach is a disc's radius).
-    const bool hit =
-        c.discs ? collideDiscs(b.x[i], b.reach[i], b.x[j], b.reach[j], m)
-                : collide(*b.shape[i], {b.x[i], b.angle[i]}, *b.shape[j], {b.x[j], b.angle[j]}, m);
-    if (!hit) {
-      c.touching = false;
-      c.force = Vec2::Zero();
-      newShear[k] = Vec2::Zero();
-      continue;
-    }
-    const PairLaw& law = laws[b.material[i] * nm + b.material[j]];
-    const Vec2 ri = m.point - b.x[i], rj = m.point - b.x[j];
-    const Vec2 vrel = (vel[j] + spin(omega[j], rj)) - (vel[i] + spin(omega[i], ri));
-    const Vec2& nrm = m.normal;
-    const double vn = vrel.dot(nrm);
-    const Vec2 vt = vrel - vn * nrm;
-    // The damping coefficient depends on the masses and materials only: kept
-    // per contact (2 zeta sqrt(m_eff kn) for the linear law, 2 zeta sqrt(m_eff)
-    // for Hertz, whose kn changes with the overlap) until either changes.
-    if (c.damping < 0) {
-      const double meff = 1.0 / (b.invMass[i] + b.invMass[j]);
-      c.damping = law.damping >= 0 ? law.damping
-                                   : 2.0 * law.zeta * std::sqrt(meff * (law.hertz ? 1.0 : law.kn));
-    }
-    double kn = law.kn, ks = law.ks, fElastic = law.kn * m.overlap;
-    if (law.hertz) {  // stiffnesses grow with the contact radius sqrt(R* d)
-      const double root = std::sqrt(effectiveRadius(i, j) * m.overlap);
-      fElastic = 4.0 / 3.0 * law.effectiveYoungs * root * m.overlap;
-      kn = 2.0 * law.effectiveYoungs * root;
-      ks = 8.0 * law.effectiveShear * root;
-    }
-    const double cn = law.hertz && law.damping < 0 ? c.damping * std::sqrt(kn) : c.damping;
-    const double fn = fElastic - cn * vn;  // along the normal, on j
-
-    // Incremental shear spring, turned with the contact: by the rotation that
-    // takes last step's normal to this one (the projection only sweeps up
-    // round-off).
-    Vec2 shear = Vec2::Zero();
-    if (c.touching) {
-      const double cs = c.normal.dot(nrm), sn = cross(c.normal, nrm);
-      shear = Vec2(cs * c.shear.x() - sn * c.shear.y(), sn * c.shear.x() + cs * c.shear.y());
-      shear -= shear.dot(nrm) * nrm;
-    }
-    shear -= ks * dt * vt;
-    const double ct = 0.5 * cn;
-    Vec2 ft = shear - ct * vt;
-    // Friction bears on compression only: near separation the damping can make
-    // fn tensile, and |fn| there would add friction impulse (5% too much spin
-    // in an oblique impact).
-    const double cap = law.friction * std::max(fn, 0.0), ftn2 = ft.squaredNorm();
-    if (ftn2 > cap * cap) {  // sliding: the spring holds what friction allows
-      ft *= cap / std::sqrt(ftn2);
-      shear = ft + ct * vt;
-    }
-    c.touching = true;
-    c.normal = nrm;
-    c.point = m.point;
-    c.overlap = m.overlap;
-    c.force = fn * nrm + ft;
-    newShear[k] = shear;
-    const double size = std::min(b.extent[i], b.extent[j]);
-    excessive[k] = m.overlap > maxOverlap * size || !c.force.allFinite();
-  }
-
-  for (std::ptrdiff_t k = 0; k < nc; ++k)
-    if (excessive[k]) {
-      const Contact& c = contacts_[k];
-      throw Error("UNSTABLE OVERLAP",
-                  "elements " + std::to_string(c.idA) + " and " + std::to_string(c.idB) +
-                      " overlap by " + formatNumber(c.overlap) + ", more than " +
-                      formatNumber(maxOverlap) +
-                      " of the smaller one's size: reduce the timestep or stiffen the material");
-    }
-  std::vector<char>& touching = scratchTouch_;  // for checkSpeeds
-  touching.assign(n, 0);
-  for (std::ptrdiff_t k = 0; k < nc; ++k) {
-    Contact& c = contacts_[k];
-    c.shear = newShear[k];
-    if (!c.touching) continue;
+  Contact* contacts = contacts_.data();
+  Vec2* __restrict before = (scratchShear_.resize(nc), scratchShear_.data());
+  std::vector<char>& touchingFlags = scratchTouch_;  // for checkSpeeds
+  touchingFlags.assign(n, 0);
+  char* touching = touchingFlags.data();
+  // The first contact (in list order, whatever the threads) that stops the step.
+  std::ptrdiff_t bad = nc;
+  const double limit = maxOverlap;
+  // Each element sums its contacts in list order on one thread or several, so
+  // the forces are the same bits for any thread count.
+  Vec2* __restrict force = b.force.data();
+  double* __restrict torque = b.torque.data();
+  const Vec2* x = b.x.data();
+  auto add = [=](const Contact& c) {
     touching[c.a] = touching[c.b] = 1;
-    b.force[c.a] -= c.force;
-    b.force[c.b] += c.force;
-    b.torque[c.a] -= cross(c.point - b.x[c.a], c.force);
-    b.torque[c.b] += cross(c.point - b.x[c.b], c.force);
+    force[c.a] -= c.force;
+    force[c.b] += c.force;
+    torque[c.a] -= cross(c.point - x[c.a], c.force);
+    torque[c.b] += cross(c.point - x[c.b], c.force);
+  };
+  // Few contacts stay on one thread: a parallel region would cost more.
+  if (threads <= 1 || nc < 512) {
+    for (std::ptrdiff_t k = 0; k < nc; ++k) {
+      Contact& c = contacts[k];
+      before[k] = c.shear;
+      detail::evaluateContact(c, in);
+      if (!c.touching) continue;
+      if (bad == nc && detail::excessive(c, limit)) bad = k;
+      add(c);
+    }
+  } else {
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(min : bad)
+    for (std::ptrdiff_t k = 0; k < nc; ++k) {
+      Contact& c = contacts[k];
+      before[k] = c.shear;
+      detail::evaluateContact(c, in);
+      if (detail::excessive(c, limit)) bad = std::min(bad, k);
+    }
+    if (bad == nc)
+      for (std::ptrdiff_t k = 0; k < nc; ++k)
+        if (contacts[k].touching) add(contacts[k]);
+  }
+  if (bad < nc) {
+    // The step stops: the shear springs stay as they were.
+    for (std::ptrdiff_t k = 0; k < nc; ++k) contacts[k].shear = before[k];
+    const Contact& c = contacts[bad];
+    throw Error("UNSTABLE OVERLAP",
+                "elements " + std::to_string(c.idA) + " and " + std::to_string(c.idB) +
+                    " overlap by " + formatNumber(c.overlap) + ", more than " +
+                    formatNumber(maxOverlap) +
+                    " of the smaller one's size: reduce the timestep or stiffen the material");
   }
   if (!bonds_.empty()) bondForces(dt, vel, omega);
+  // x - x is 0 for finite x and NaN otherwise: one branch-free pass, then the
+  // slot is looked for only when some force is not finite.
+  double probe = 0;
   for (int s = 0; s < n; ++s)
-    if (!b.force[s].allFinite() || !std::isfinite(b.torque[s]))
-      throw Error("UNSTABLE NAN",
-                  "the force on element " + std::to_string(b.id[s]) + " is not finite");
+    probe +=
+        (force[s].x() - force[s].x()) + (force[s].y() - force[s].y()) + (torque[s] - torque[s]);
+  if (probe != 0 || std::isnan(probe))
+    for (int s = 0; s < n; ++s)
+      if (!b.force[s].allFinite() || !std::isfinite(b.torque[s]))
+        throw Error("UNSTABLE NAN",
+                    "the force on element " + std::to_string(b.id[s]) + " is not finite");
 }
 
 // Energy blow-up shows as an element in contact about to jump by more than
@@ -392,15 +402,18 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
 // moving anything.
 void Assembly::checkSpeeds(double dt) const {
   const Bodies& b = bodies_;
-  const std::vector<char>& touching = scratchTouch_;  // marked by computeForces
+  const char* touching = scratchTouch_.data();  // marked by computeForces
+  const Vec2 *v = b.v.data(), *force = b.force.data();
+  const double *w = b.w.data(), *torque = b.torque.data(), *mass = b.mass.data(),
+               *inertia = b.inertia.data(), *reach = b.reach.data(), *extent = b.extent.data();
   for (int s = 0; s < b.size(); ++s) {
-    if ((b.invMass[s] == 0 && b.invInertia[s] == 0) || !touching[s]) continue;
-    const Vec2 v = b.v[s] + dt * b.force[s] / b.mass[s];
-    const double w = std::abs(b.w[s] + dt * b.torque[s] / b.inertia[s]);
-    const double size = b.extent[s];
+    if (!touching[s] || (b.invMass[s] == 0 && b.invInertia[s] == 0)) continue;
+    const Vec2 vNext = v[s] + dt * force[s] / mass[s];
+    const double wNext = std::abs(w[s] + dt * torque[s] / inertia[s]);
+    const double size = extent[s];
     // |v| <= |vx| + |vy|: nearly every element passes without a square root.
-    if ((std::abs(v.x()) + std::abs(v.y()) + w * b.reach[s]) * dt <= 0.5 * size) continue;
-    const double jump = (v.norm() + w * b.reach[s]) * dt;
+    if ((std::abs(vNext.x()) + std::abs(vNext.y()) + wNext * reach[s]) * dt <= 0.5 * size) continue;
+    const double jump = (vNext.norm() + wNext * reach[s]) * dt;
     if (jump > 0.5 * size || !std::isfinite(jump))
       throw Error("UNSTABLE SPEED",
                   "element " + std::to_string(b.id[s]) + " would move " + formatNumber(jump) +
@@ -411,41 +424,12 @@ void Assembly::checkSpeeds(double dt) const {
 
 void Assembly::integrate(double dt) {
   Bodies& b = bodies_;
-  const int n = b.size();
-#pragma omp parallel for schedule(static) num_threads(threads) if (n >= 2048)
-  for (int s = 0; s < n; ++s) {
-    const std::uint8_t h = b.hold[s];
-    Vec2 a = b.force[s] / b.mass[s];
-    double alpha = b.torque[s] / b.inertia[s];
-    if (h & holdX) a.x() = 0;
-    if (h & holdY) a.y() = 0;
-    if (h & holdRotation) alpha = 0;
-    switch (integrator) {
-      case Integrator::central:
-        if (!b.started[s]) {  // v(-dt/2) from v(0): second order from the first step
-          b.vHalf[s] = b.v[s] - 0.5 * dt * a;
-          b.wHalf[s] = b.w[s] - 0.5 * dt * alpha;
-          b.started[s] = 1;
-        }
-        b.vHalf[s] += dt * a;
-        b.wHalf[s] += dt * alpha;
-        b.x[s] += dt * b.vHalf[s];
-        b.angle[s] += dt * b.wHalf[s];
-        b.v[s] = b.vHalf[s] + 0.5 * dt * a;  // velocity at the same time as the position
-        b.w[s] = b.wHalf[s] + 0.5 * dt * alpha;
-        break;
-      case Integrator::euler:  // the thesis's first-order scheme
-        b.v[s] += dt * a;
-        b.w[s] += dt * alpha;
-        b.x[s] += dt * b.v[s];
-        b.angle[s] += dt * b.w[s];
-        break;
-      case Integrator::verlet:  // second half kick; the drift was done before the forces
-        b.v[s] = b.vHalf[s] + 0.5 * dt * a;
-        b.w[s] = b.wHalf[s] + 0.5 * dt * alpha;
-        break;
-    }
-  }
+  const detail::Motion m{b.x.data(),    b.v.data(),       b.vHalf.data(), b.angle.data(),
+                         b.w.data(),    b.wHalf.data(),   b.force.data(), b.torque.data(),
+                         b.mass.data(), b.inertia.data(), b.hold.data()};
+  if (integrator == Integrator::central && anyUnstarted())
+    detail::startCentral(m, b.started.data(), b.size(), dt);
+  detail::advance(integrator, m, b.size(), dt, threads);
 }
 
 void Assembly::step(double dt, const Vec2& gravity) {
@@ -460,7 +444,7 @@ void Assembly::step(double dt, const Vec2& gravity) {
     // Kick-drift with the forces of the previous step, then forces, then kick.
     x0 = b.x;
     a0 = b.angle;
-    if (std::find(b.started.begin(), b.started.end(), 0) != b.started.end()) {
+    if (anyUnstarted()) {
       // An element without a previous step (new, or set by hand) kicks with the
       // force at its present state: evaluate it, keeping the contact history
       // (the step's own evaluation follows) and the others' forces.
@@ -510,8 +494,9 @@ void Assembly::step(double dt, const Vec2& gravity) {
     // extrapolated v(t) = v(t - dt/2) + a(t - dt) dt/2 feeds back the previous
     // acceleration and sustains limit cycles of the contact-rotation modes at
     // dt_crit/10 (a settling bed never came to rest).
-    for (int s = 0; s < n; ++s)
-      if (!b.started[s]) b.vHalf[s] = b.v[s], b.wHalf[s] = b.w[s];
+    if (anyUnstarted())
+      for (int s = 0; s < n; ++s)
+        if (!b.started[s]) b.vHalf[s] = b.v[s], b.wHalf[s] = b.w[s];
     computeForces(dt, gravity, integrator == Integrator::central);
   }
   times_.narrow += since(t0);

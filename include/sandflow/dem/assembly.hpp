@@ -2,6 +2,7 @@
 // The discrete elements of a scene: bodies, materials, contacts, and the DEM
 // step (contact detection, contact forces, integration).
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -32,16 +33,23 @@ struct ElementDef {
 };
 
 // A candidate pair from the broad phase and, while it touches, its contact.
+// The fields the force loop reads and writes come first (the accumulation
+// reads only the first cache line).
 struct Contact {
-  int a, b;                   // slots, a < b
-  int idA, idB;               // element ids (stable across deletions)
-  Vec2 shear = Vec2::Zero();  // tangential spring force on b (history)
+  int a, b;  // slots, a < b
   bool touching = false;
-  bool discs = false;   // both discs: the narrow phase runs inline
-  double damping = -1;  // normal damping coefficient (see computeForces); < 0: not yet
-  Vec2 normal = Vec2::Zero(), point = Vec2::Zero();
-  double overlap = 0.0;
+  bool discs = false;         // both discs: the narrow phase runs inline
+  int law = 0;                // the pair's law, in the step's table (see prepareContact)
   Vec2 force = Vec2::Zero();  // total contact force on b (on a: the opposite)
+  Vec2 point = Vec2::Zero();
+  Vec2 normal = Vec2::Zero();
+  Vec2 shear = Vec2::Zero();  // tangential spring force on b (history)
+  double overlap = 0.0;
+  // Cached from the elements and materials until either changes (damping < 0:
+  // not yet): the normal damping coefficient (see prepareContact), the smaller
+  // element's contact size, the effective radius of curvature (Hertz).
+  double damping = -1, size = 0, radius = 0;
+  int idA = -1, idB = -1;  // element ids (stable across deletions)
 };
 
 // A source (physics.md §4): a held element that touches nothing and clones
@@ -129,6 +137,11 @@ class Assembly {
 
  private:
   void computeForces(double dt, const Vec2& gravity, bool commit);
+  // Fills a contact's cached law, size, damping and radius.
+  void prepareContact(Contact& c) const;
+  // The pair-law table and the contacts' caches, when stale (or the contacts
+  // are new).
+  void refreshLaws(bool newContacts = false);
   void spawnClones();
   void servoPlates(double dt);
   void checkSpeeds(double dt) const;
@@ -141,6 +154,9 @@ class Assembly {
   bool closestPoints(int slotA, int slotB, double gap, Vec2& pa, Vec2& pb) const;
   void updatePairs();
   void integrate(double dt);
+  bool anyUnstarted() const {  // some slot has no half-step velocity yet
+    return std::memchr(bodies_.started.data(), 0, bodies_.started.size()) != nullptr;
+  }
 
   MaterialTable materials_;
   Bodies bodies_;
@@ -160,9 +176,12 @@ class Assembly {
   std::vector<BondBreak> pendingBreaks_;
   bool bondsPending_ = false;
   std::vector<Source> sources_;
+  std::vector<int> plates_;  // slots with a servo, found again when generation_ changes
+  std::uint64_t platesAt_ = 0;
   // Per-step scratch, kept to avoid allocating in the step.
-  std::vector<Vec2> scratchShear_;
-  std::uint64_t generation_ = 1;  // bumped by every change to masses, holds or the element set
+  std::vector<Vec2> scratchShear_;  // the shear springs before the step, to undo it
+  std::vector<PairLaw> laws_;       // material pairs, i * materials + j
+  std::uint64_t generation_ = 1;    // bumped by every change to masses, holds or the element set
   mutable std::uint64_t criticalAt_ = 0;
   mutable std::uint64_t criticalMaterials_ = 0;  // materials_.version() then
   // Per-contact damping (Contact::damping) holds for these.

@@ -1,0 +1,83 @@
+#include "integrate.hpp"
+
+#include <omp.h>
+#include <algorithm>
+
+namespace sf::dem::detail {
+namespace {
+
+// The acceleration, zero along held degrees of freedom.
+struct Accel {
+  double x, y, alpha;
+};
+[[gnu::always_inline]] inline Accel accel(const Motion& m, int s) {
+  const std::uint8_t h = m.hold[s];
+  return {h & holdX ? 0.0 : m.force[s].x() / m.mass[s],
+          h & holdY ? 0.0 : m.force[s].y() / m.mass[s],
+          h & holdRotation ? 0.0 : m.torque[s] / m.inertia[s]};
+}
+
+template <Integrator scheme>
+void advanceRange(const Motion& in, int begin, int end, double dt) {
+  Vec2* __restrict x = in.x, * __restrict v = in.v, * __restrict vHalf = in.vHalf;
+  double* __restrict angle = in.angle, * __restrict w = in.w, * __restrict wHalf = in.wHalf;
+  for (int s = begin; s < end; ++s) {
+    const Accel a = accel(in, s);
+    if constexpr (scheme == Integrator::central) {
+      const Vec2 vh = vHalf[s] + dt * Vec2(a.x, a.y);
+      const double wh = wHalf[s] + dt * a.alpha;
+      vHalf[s] = vh, wHalf[s] = wh;
+      x[s] += dt * vh;
+      angle[s] += dt * wh;
+      v[s] = vh + 0.5 * dt * Vec2(a.x, a.y);  // velocity at the same time as the position
+      w[s] = wh + 0.5 * dt * a.alpha;
+    } else if constexpr (scheme == Integrator::euler) {  // the thesis's first-order scheme
+      const Vec2 vn = v[s] + dt * Vec2(a.x, a.y);
+      const double wn = w[s] + dt * a.alpha;
+      v[s] = vn, w[s] = wn;
+      x[s] += dt * vn;
+      angle[s] += dt * wn;
+    } else {  // verlet: second half kick; the drift was done before the forces
+      v[s] = vHalf[s] + 0.5 * dt * Vec2(a.x, a.y);
+      w[s] = wHalf[s] + 0.5 * dt * a.alpha;
+    }
+  }
+}
+
+template <Integrator scheme>
+void advanceAll(const Motion& m, int n, double dt, int threads) {
+  // Below a few thousand slots a parallel region costs more than it saves.
+  const int t = n >= 2048 ? std::max(threads, 1) : 1;
+  if (t == 1) return advanceRange<scheme>(m, 0, n, dt);
+#pragma omp parallel num_threads(t)
+  {
+    const int count = omp_get_num_threads(), me = omp_get_thread_num();
+    advanceRange<scheme>(m, int(std::int64_t(n) * me / count),
+                         int(std::int64_t(n) * (me + 1) / count), dt);
+  }
+}
+
+}  // namespace
+
+void startCentral(const Motion& m, std::uint8_t* started, int n, double dt) {
+  for (int s = 0; s < n; ++s)
+    if (!started[s]) {
+      const Accel a = accel(m, s);
+      m.vHalf[s] = m.v[s] - 0.5 * dt * Vec2(a.x, a.y);
+      m.wHalf[s] = m.w[s] - 0.5 * dt * a.alpha;
+      started[s] = 1;
+    }
+}
+
+void advance(Integrator scheme, const Motion& m, int n, double dt, int threads) {
+  switch (scheme) {
+    case Integrator::central:
+      return advanceAll<Integrator::central>(m, n, dt, threads);
+    case Integrator::euler:
+      return advanceAll<Integrator::euler>(m, n, dt, threads);
+    case Integrator::verlet:
+      return advanceAll<Integrator::verlet>(m, n, dt, threads);
+  }
+}
+
+}  // namespace sf::dem::detail
