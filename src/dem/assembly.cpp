@@ -5,7 +5,10 @@
 #include <cmath>
 #include <unordered_map>
 
+#include <omp.h>
+
 #include "contact_force.hpp"
+#include "disc_contacts.hpp"
 #include "integrate.hpp"
 #include "sandflow/core/error.hpp"
 
@@ -294,6 +297,7 @@ void Assembly::prepareContact(Contact& c) const {
                                : 2.0 * law.zeta * std::sqrt(meff * (law.hertz ? 1.0 : law.kn));
   c.size = std::min(b.extent[i], b.extent[j]);
   c.radius = effectiveRadius(i, j);
+  c.vectorDiscs = c.discs && !law.hertz;
 }
 
 void Assembly::refreshLaws(bool newContacts) {
@@ -344,34 +348,90 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
   Vec2* __restrict force = b.force.data();
   double* __restrict torque = b.torque.data();
   const Vec2* x = b.x.data();
-  auto add = [=](const Contact& c) {
-    touching[c.a] = touching[c.b] = 1;
-    force[c.a] -= c.force;
-    force[c.b] += c.force;
-    torque[c.a] -= cross(c.point - x[c.a], c.force);
-    torque[c.b] += cross(c.point - x[c.b], c.force);
+  // Takes the force and point as values: read back from the contact just
+  // written, they would wait for the stores (two 8-byte stores do not forward
+  // to a 16-byte load).
+  auto add = [=](int a, int b, const Vec2& f, const Vec2& point) {
+    touching[a] = touching[b] = 1;
+    force[a] -= f;
+    force[b] += f;
+    torque[a] -= cross(point - x[a], f);
+    torque[b] += cross(point - x[b], f);
   };
+  // Three passes. First, which candidates may touch: disc pairs are tested,
+  // other shapes listed; the disc pairs with a linear law are staged in
+  // columns for the vector pass.
+  scratchLive_.resize(2 * nc);
+  std::ptrdiff_t* __restrict live = scratchLive_.data();
+  std::ptrdiff_t* __restrict others = live + nc;
+  scratchPairIndex_.resize(2 * nc);
+  scratchPairData_.resize(9 * nc);
+  double* pd = scratchPairData_.data();
+  const detail::DiscPairs pairs{scratchPairIndex_.data(),
+                                scratchPairIndex_.data() + nc,
+                                pd,
+                                pd + nc,
+                                pd + 2 * nc,
+                                pd + 3 * nc,
+                                pd + 4 * nc,
+                                pd + 5 * nc,
+                                pd + 6 * nc,
+                                pd + 7 * nc,
+                                pd + 8 * nc};
+  std::ptrdiff_t count = 0, vectorCount = 0, otherCount = 0;
+  for (std::ptrdiff_t k = 0; k < nc; ++k) {
+    Contact& c = contacts[k];
+    before[k] = c.shear;
+    const bool hit = detail::mayTouch(c, in);
+    // Written every time, kept by counting: whether a pair touches is not
+    // predictable, and a branch would be mispredicted often.
+    live[count] = others[otherCount] = k;
+    detail::stage(c, laws_.data(), pairs, vectorCount);
+    count += hit;
+    otherCount += hit & !c.vectorDiscs;
+    vectorCount += hit & c.vectorDiscs;
+  }
+  // Second, the forces: the linear disc pairs many at a time, the others one by one.
+  scratchResults_.resize(9 * std::size_t(vectorCount));
+  double* r = scratchResults_.data();
+  const std::ptrdiff_t vc = vectorCount;
+  const detail::DiscResults out{r,          r + vc,     r + 2 * vc, r + 3 * vc, r + 4 * vc,
+                                r + 5 * vc, r + 6 * vc, r + 7 * vc, r + 8 * vc};
   // Few contacts stay on one thread: a parallel region would cost more.
-  if (threads <= 1 || nc < 512) {
-    for (std::ptrdiff_t k = 0; k < nc; ++k) {
-      Contact& c = contacts[k];
-      before[k] = c.shear;
-      detail::evaluateContact(c, in);
-      if (!c.touching) continue;
-      if (bad == nc && detail::excessive(c, limit)) bad = k;
-      add(c);
-    }
+  const int team = count >= 512 ? std::max(threads, 1) : 1;
+  if (team == 1) {
+    detail::linearDiscContacts(pairs, 0, vc, in, out);
+    for (std::ptrdiff_t q = 0; q < otherCount; ++q)
+      detail::evaluateContact(contacts[others[q]], in);
   } else {
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(min : bad)
-    for (std::ptrdiff_t k = 0; k < nc; ++k) {
-      Contact& c = contacts[k];
-      before[k] = c.shear;
-      detail::evaluateContact(c, in);
-      if (detail::excessive(c, limit)) bad = std::min(bad, k);
+#pragma omp parallel num_threads(team)
+    {
+      const int size = omp_get_num_threads(), me = omp_get_thread_num();
+      detail::linearDiscContacts(pairs, vc * me / size, vc * (me + 1) / size, in, out);
+#pragma omp for schedule(dynamic, 64)
+      for (std::ptrdiff_t q = 0; q < otherCount; ++q)
+        detail::evaluateContact(contacts[others[q]], in);
     }
-    if (bad == nc)
-      for (std::ptrdiff_t k = 0; k < nc; ++k)
-        if (contacts[k].touching) add(contacts[k]);
+  }
+  // Third, in list order: the results stored, the checks, the sums.
+  for (std::ptrdiff_t i = 0, q = 0; i < count; ++i) {
+    const std::ptrdiff_t k = live[i];
+    Contact& c = contacts[k];
+    if (c.vectorDiscs) {
+      const Vec2 f(out.fx[q], out.fy[q]), point(out.px[q], out.py[q]);
+      c.touching = true;
+      c.normal = Vec2(out.nx[q], out.ny[q]);
+      c.point = point;
+      c.overlap = out.overlap[q];
+      c.force = f;
+      c.shear = Vec2(out.sx[q], out.sy[q]);
+      if (bad == nc && (c.overlap > limit * c.size || !f.allFinite())) bad = k;
+      add(c.a, c.b, f, point);
+      ++q;
+    } else if (c.touching) {
+      if (bad == nc && detail::excessive(c, limit)) bad = k;
+      add(c.a, c.b, c.force, c.point);
+    }
   }
   if (bad < nc) {
     // The step stops: the shear springs stay as they were.

@@ -71,16 +71,37 @@ struct ContactInputs {
   // fn tensile, and |fn| there would add friction impulse (5% too much spin
   // in an oblique impact).
   const double cap = law.friction * std::max(fn, 0.0), ftn2 = ft.squaredNorm();
-  if (ftn2 > cap * cap) {  // sliding: the spring holds what friction allows
-    ft *= cap / std::sqrt(ftn2);
-    shear = ft + ct * vt;
-  }
+  // Sliding: the spring holds what friction allows. Selected, not branched: a
+  // bed's contacts stick and slip unpredictably, and a mispredicted branch
+  // costs more than the square root.
+  const bool sliding = ftn2 > cap * cap;
+  const double scale = cap / std::sqrt(ftn2 > 0 ? ftn2 : 1.0);
+  const double fx = ft.x() * scale, fy = ft.y() * scale;
+  const double sx = fx + ct * vt.x(), sy = fy + ct * vt.y();
+  ft = Vec2(sliding ? fx : ft.x(), sliding ? fy : ft.y());
+  shear = Vec2(sliding ? sx : shear.x(), sliding ? sy : shear.y());
   c.touching = true;
   c.normal = nrm;
   c.point = m.point;
   c.overlap = m.overlap;
   c.force = fn * nrm + ft;
   c.shear = shear;
+}
+
+// The first pass over the candidates: whether a pair may touch. Disc pairs are
+// tested here, without a branch (whether a bed's pairs touch is not
+// predictable), and cleared when they part; other shapes always go on to
+// evaluateContact.
+[[gnu::always_inline]] inline bool mayTouch(Contact& c, const ContactInputs& in) {
+  const Vec2 d = in.x[c.b] - in.x[c.a];
+  const double reach = in.reach[c.a] + in.reach[c.b];
+  const bool hit = !c.discs | (d.squaredNorm() < reach * reach);
+  if (!hit & c.touching) {  // parted since the last step: rare, so predictable
+    c.touching = false;
+    c.force = Vec2::Zero();
+    c.shear = Vec2::Zero();
+  }
+  return hit;
 }
 
 // Whether a touching contact stops the step: too deep, or a force that is not finite.

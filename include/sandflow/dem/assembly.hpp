@@ -39,6 +39,7 @@ struct Contact {
   int a, b;  // slots, a < b
   bool touching = false;
   bool discs = false;         // both discs: the narrow phase runs inline
+  bool vectorDiscs = false;   // discs with a linear law: many at a time (disc_contacts.hpp)
   int law = 0;                // the pair's law, in the step's table (see prepareContact)
   Vec2 force = Vec2::Zero();  // total contact force on b (on a: the opposite)
   Vec2 point = Vec2::Zero();
@@ -179,9 +180,13 @@ class Assembly {
   std::vector<int> plates_;  // slots with a servo, found again when generation_ changes
   std::uint64_t platesAt_ = 0;
   // Per-step scratch, kept to avoid allocating in the step.
-  std::vector<Vec2> scratchShear_;  // the shear springs before the step, to undo it
-  std::vector<PairLaw> laws_;       // material pairs, i * materials + j
-  std::uint64_t generation_ = 1;    // bumped by every change to masses, holds or the element set
+  std::vector<Vec2> scratchShear_;           // the shear springs before the step, to undo it
+  std::vector<std::ptrdiff_t> scratchLive_;  // the candidates that may touch this step
+  std::vector<int> scratchPairIndex_;        // the vector pass's inputs (DiscPairs)
+  std::vector<double> scratchPairData_;
+  std::vector<double> scratchResults_;  // and its results (DiscResults)
+  std::vector<PairLaw> laws_;           // material pairs, i * materials + j
+  std::uint64_t generation_ = 1;  // bumped by every change to masses, holds or the element set
   mutable std::uint64_t criticalAt_ = 0;
   mutable std::uint64_t criticalMaterials_ = 0;  // materials_.version() then
   // Per-contact damping (Contact::damping) holds for these.
