@@ -130,11 +130,13 @@ void Assembly::servoPlates(double dt) {
     const auto& wall = static_cast<const Wall&>(*bodies_.shape[s]);
     const Vec2 inward(-std::sin(bodies_.angle[s]), std::cos(bodies_.angle[s]));
     double load = 0, stiffness = 0;
-    for (const Contact& c : contacts_) {
-      if (!c.touching || (c.a != s && c.b != s)) continue;
-      const Vec2 onWall = c.a == s ? Vec2(-c.force) : c.force;
+    const ContactList& l = list_;
+    for (std::size_t k = 0; k < l.size(); ++k) {
+      if (!l.touching(k) || (l.a[k] != s && l.b[k] != s)) continue;
+      const Vec2 force(l.fx[k], l.fy[k]);
+      const Vec2 onWall = l.a[k] == s ? Vec2(-force) : force;
       load -= onWall.dot(inward);  // the grains push the plate back
-      const int other = c.a == s ? c.b : c.a;
+      const int other = l.a[k] == s ? l.b[k] : l.a[k];
       stiffness += combine(materials_[bodies_.material[s]], materials_[bodies_.material[other]]).kn;
     }
     const double target = bodies_.stress[s] * wall.length();
@@ -187,15 +189,40 @@ double Assembly::measureCriticalTimestep() const {
 }
 
 std::size_t Assembly::touchingCount() const {
-  return std::count_if(contacts_.begin(), contacts_.end(),
-                       [](const Contact& c) { return c.touching; });
+  const auto& t = list_.now().touching;
+  return std::size_t(std::count(t.begin(), t.end(), std::int32_t(1)));
 }
 
 Vec2 Assembly::contactForce(int s) const {
+  const ContactList& l = list_;
   Vec2 f = Vec2::Zero();
-  for (const Contact& c : contacts_)
-    if (c.touching) f += c.a == s ? Vec2(-c.force) : c.b == s ? c.force : Vec2::Zero();
+  for (std::size_t k = 0; k < l.size(); ++k)
+    if (l.touching(k))
+      f += l.a[k] == s   ? Vec2(-l.fx[k], -l.fy[k])
+           : l.b[k] == s ? Vec2(l.fx[k], l.fy[k])
+                         : Vec2::Zero();
   return f;
+}
+
+const std::vector<Contact>& Assembly::contacts() const {
+  if (viewValid_) return view_;
+  const ContactList& l = list_;
+  const ContactHistory& h = l.now();
+  view_.resize(l.size());
+  for (std::size_t k = 0; k < l.size(); ++k) {
+    Contact& c = view_[k];
+    c.a = l.a[k], c.b = l.b[k], c.idA = l.idA[k], c.idB = l.idB[k];
+    c.touching = h.touching[k] != 0;
+    c.discs = l.discs[k] != 0;
+    c.damping = l.damping[k];
+    c.normal = Vec2(h.nx[k], h.ny[k]);
+    c.shear = c.touching ? Vec2(h.sx[k], h.sy[k]) : Vec2::Zero();
+    c.point = Vec2(l.px[k], l.py[k]);
+    c.overlap = l.overlap[k];
+    c.force = c.touching ? Vec2(l.fx[k], l.fy[k]) : Vec2::Zero();
+  }
+  viewValid_ = true;
+  return view_;
 }
 
 double Assembly::kineticEnergy() const {
@@ -216,7 +243,7 @@ Vec2 Assembly::momentum() const {
 // has moved (or turned) by half the skin since the last build.
 void Assembly::updatePairs() {
   const int n = bodies_.size();
-  bool rebuild = !pairsValid_ || int(builtAt_.size()) != n;
+  bool rebuild = !pairsValid_ || int(builtAt_.size()) != n || lawsStale();
   if (!rebuild) {
     const Vec2 *x = bodies_.x.data(), *x0 = builtAt_.data();
     const double *angle = bodies_.angle.data(), *angle0 = builtAngle_.data(),
@@ -243,40 +270,74 @@ void Assembly::updatePairs() {
   std::vector<std::pair<int, int>> pairs;
   dess_.findPairs(boxes, pairs);
 
-  // Contact history carries over by element ids. Both lists are sorted by slot
-  // pair, so while no slot has moved a merge does it; after a deletion, a map.
-  std::unordered_map<std::uint64_t, std::pair<Vec2, Vec2>> history;  // shear, normal
+  if (lawsStale()) buildLaws();
+  // The new list: linear disc pairs first, then the others, each run in slot
+  // pair order (as the broad phase returns them).
+  struct Kept {
+    int a, b;
+    std::ptrdiff_t old;  // the same pair in the old list, if it touched (else -1)
+  };
+  std::vector<Kept> kept[2];
+  // Contact history carries over by element ids. Each run of the old list is
+  // in slot-pair order, so while no slot has moved a merge does it (one
+  // cursor per run); after a deletion, a map.
+  const ContactList& old = list_;
+  const ContactHistory& oldHistory = old.now();
+  std::unordered_map<std::uint64_t, std::size_t> byIds;
   if (slotsMoved_)
-    for (const Contact& c : contacts_)
-      if (c.touching) history[pairKey(c.idA, c.idB)] = {c.shear, c.normal};
-  std::size_t old = 0;
-  std::vector<Contact> next;
-  next.reserve(pairs.size());
+    for (std::size_t k = 0; k < old.size(); ++k)
+      if (oldHistory.touching[k]) byIds[pairKey(old.idA[k], old.idB[k])] = k;
+  std::size_t cursor[2] = {0, old.vectorCount};
+  const std::size_t runEnd[2] = {old.vectorCount, old.size()};
+  const int nm = materials_.size();
   for (const auto& [a, b] : pairs) {
     if (!canCollide(bodies_.shape[a]->type(), bodies_.shape[b]->type())) continue;
     if (bodies_.ghost[a] || bodies_.ghost[b]) continue;
     const bool immovable = bodies_.invMass[a] == 0 && bodies_.invInertia[a] == 0 &&
                            bodies_.invMass[b] == 0 && bodies_.invInertia[b] == 0;
     if (immovable) continue;
-    Contact c{a, b};
-    c.idA = bodies_.id[a], c.idB = bodies_.id[b];
-    c.discs =
-        bodies_.shape[a]->type() == ShapeType::disc && bodies_.shape[b]->type() == ShapeType::disc;
+    std::ptrdiff_t from = -1;
     if (slotsMoved_) {
-      if (auto it = history.find(pairKey(c.idA, c.idB)); it != history.end())
-        c.shear = it->second.first, c.normal = it->second.second, c.touching = true;
+      if (auto it = byIds.find(pairKey(bodies_.id[a], bodies_.id[b])); it != byIds.end())
+        from = std::ptrdiff_t(it->second);
     } else {
-      while (old < contacts_.size() &&
-             std::pair(contacts_[old].a, contacts_[old].b) < std::pair(a, b))
-        ++old;
-      if (old < contacts_.size() && contacts_[old].a == a && contacts_[old].b == b &&
-          contacts_[old].touching)
-        c.shear = contacts_[old].shear, c.normal = contacts_[old].normal, c.touching = true;
+      for (int run = 0; run < 2; ++run) {
+        std::size_t& k = cursor[run];
+        while (k < runEnd[run] && std::pair(old.a[k], old.b[k]) < std::pair(a, b)) ++k;
+        if (k < runEnd[run] && old.a[k] == a && old.b[k] == b && oldHistory.touching[k])
+          from = std::ptrdiff_t(k);
+      }
     }
-    next.push_back(c);
+    const bool discs =
+        bodies_.shape[a]->type() == ShapeType::disc && bodies_.shape[b]->type() == ShapeType::disc;
+    const bool linear = !laws_[bodies_.material[a] * nm + bodies_.material[b]].hertz;
+    kept[discs && linear && vectorPass ? 0 : 1].push_back({a, b, from});
   }
-  contacts_.swap(next);
-  refreshLaws(true);
+  ContactList next;
+  next.resize(kept[0].size() + kept[1].size());
+  next.vectorCount = kept[0].size();
+  ContactHistory& h = next.history[0];
+  std::size_t k = 0;
+  for (const std::vector<Kept>& run : kept)
+    for (const Kept& e : run) {
+      next.a[k] = e.a, next.b[k] = e.b;
+      next.idA[k] = bodies_.id[e.a], next.idB[k] = bodies_.id[e.b];
+      next.discs[k] = bodies_.shape[e.a]->type() == ShapeType::disc &&
+                      bodies_.shape[e.b]->type() == ShapeType::disc;
+      prepareContact(next, k);
+      if (e.old >= 0) {
+        const std::size_t o = std::size_t(e.old);
+        h.touching[k] = 1;
+        h.nx[k] = oldHistory.nx[o], h.ny[k] = oldHistory.ny[o];
+        h.sx[k] = oldHistory.sx[o], h.sy[k] = oldHistory.sy[o];
+        next.fx[k] = old.fx[o], next.fy[k] = old.fy[o];
+        next.px[k] = old.px[o], next.py[k] = old.py[o], next.overlap[k] = old.overlap[o];
+      }
+      ++k;
+    }
+  list_ = std::move(next);
+  viewValid_ = false;
+  dampingAt_ = generation_;
   slotsMoved_ = false;
   builtAt_ = bodies_.x;
   builtAngle_ = bodies_.angle;
@@ -284,34 +345,39 @@ void Assembly::updatePairs() {
   ++builds_;
 }
 
-void Assembly::prepareContact(Contact& c) const {
+void Assembly::prepareContact(ContactList& l, std::size_t k) const {
   const Bodies& b = bodies_;
-  const int i = c.a, j = c.b, nm = materials_.size();
-  c.law = b.material[i] * nm + b.material[j];
-  const PairLaw& law = laws_[c.law];
+  const int i = l.a[k], j = l.b[k], nm = materials_.size();
+  l.law[k] = b.material[i] * nm + b.material[j];
+  const PairLaw& law = laws_[l.law[k]];
   // The damping coefficient depends on the masses and materials only: 2 zeta
   // sqrt(m_eff kn) for the linear law, 2 zeta sqrt(m_eff) for Hertz, whose kn
   // changes with the overlap.
   const double meff = 1.0 / (b.invMass[i] + b.invMass[j]);
-  c.damping = law.damping >= 0 ? law.damping
-                               : 2.0 * law.zeta * std::sqrt(meff * (law.hertz ? 1.0 : law.kn));
-  c.size = std::min(b.extent[i], b.extent[j]);
-  c.radius = effectiveRadius(i, j);
-  c.vectorDiscs = c.discs && !law.hertz;
+  l.damping[k] = law.damping >= 0 ? law.damping
+                                  : 2.0 * law.zeta * std::sqrt(meff * (law.hertz ? 1.0 : law.kn));
+  l.minSize[k] = std::min(b.extent[i], b.extent[j]);
+  l.radius[k] = effectiveRadius(i, j);
 }
 
-void Assembly::refreshLaws(bool newContacts) {
+bool Assembly::lawsStale() const {
   const int nm = materials_.size();
-  const bool materialsChanged =
-      dampingMaterials_ != materials_.version() || int(laws_.size()) != nm * nm;
-  if (!newContacts && !materialsChanged && dampingAt_ == generation_) return;
-  if (materialsChanged) {
-    laws_.resize(nm * nm);
-    for (int i = 0; i < nm; ++i)
-      for (int j = 0; j < nm; ++j) laws_[i * nm + j] = combine(materials_[i], materials_[j]);
-  }
-  for (Contact& c : contacts_) prepareContact(c);
-  dampingAt_ = generation_, dampingMaterials_ = materials_.version();
+  return dampingMaterials_ != materials_.version() || int(laws_.size()) != nm * nm ||
+         dampingAt_ != generation_;
+}
+
+void Assembly::buildLaws() {
+  const int nm = materials_.size();
+  laws_.resize(nm * nm);
+  lawKn_.resize(nm * nm), lawKs_.resize(nm * nm), lawFriction_.resize(nm * nm);
+  for (int i = 0; i < nm; ++i)
+    for (int j = 0; j < nm; ++j) {
+      const PairLaw law = combine(materials_[i], materials_[j]);
+      laws_[i * nm + j] = law;
+      lawKn_[i * nm + j] = law.kn, lawKs_[i * nm + j] = law.ks;
+      lawFriction_[i * nm + j] = law.friction;
+    }
+  dampingMaterials_ = materials_.version();
 }
 
 void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocity) {
@@ -331,118 +397,69 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
       t[s] = appliedTorque[s] + fluidTorque[s];
     }
   }
-  refreshLaws();
   const detail::ContactInputs in{b.x.data(),   b.angle.data(), b.reach.data(), vel.data(),
                                  omega.data(), b.shape.data(), laws_.data(),   dt};
-  const std::ptrdiff_t nc = std::ptrdiff_t(contacts_.size());
-  Contact* contacts = contacts_.data();
-  Vec2* __restrict before = (scratchShear_.resize(nc), scratchShear_.data());
-  std::vector<char>& touchingFlags = scratchTouch_;  // for checkSpeeds
-  touchingFlags.assign(n, 0);
-  char* touching = touchingFlags.data();
-  // The first contact (in list order, whatever the threads) that stops the step.
-  std::ptrdiff_t bad = nc;
-  const double limit = maxOverlap;
-  // Each element sums its contacts in list order on one thread or several, so
-  // the forces are the same bits for any thread count.
-  Vec2* __restrict force = b.force.data();
-  double* __restrict torque = b.torque.data();
-  const Vec2* x = b.x.data();
-  // Takes the force and point as values: read back from the contact just
-  // written, they would wait for the stores (two 8-byte stores do not forward
-  // to a 16-byte load).
-  auto add = [=](int a, int b, const Vec2& f, const Vec2& point) {
-    touching[a] = touching[b] = 1;
-    force[a] -= f;
-    force[b] += f;
-    torque[a] -= cross(point - x[a], f);
-    torque[b] += cross(point - x[b], f);
-  };
-  // Three passes. First, which candidates may touch: disc pairs are tested,
-  // other shapes listed; the disc pairs with a linear law are staged in
-  // columns for the vector pass.
-  scratchLive_.resize(2 * nc);
-  std::ptrdiff_t* __restrict live = scratchLive_.data();
-  std::ptrdiff_t* __restrict others = live + nc;
-  scratchPairIndex_.resize(2 * nc);
-  scratchPairData_.resize(9 * nc);
-  double* pd = scratchPairData_.data();
-  const detail::DiscPairs pairs{scratchPairIndex_.data(),
-                                scratchPairIndex_.data() + nc,
-                                pd,
-                                pd + nc,
-                                pd + 2 * nc,
-                                pd + 3 * nc,
-                                pd + 4 * nc,
-                                pd + 5 * nc,
-                                pd + 6 * nc,
-                                pd + 7 * nc,
-                                pd + 8 * nc};
-  std::ptrdiff_t count = 0, vectorCount = 0, otherCount = 0;
-  for (std::ptrdiff_t k = 0; k < nc; ++k) {
-    Contact& c = contacts[k];
-    before[k] = c.shear;
-    const bool hit = detail::mayTouch(c, in);
-    // Written every time, kept by counting: whether a pair touches is not
-    // predictable, and a branch would be mispredicted often.
-    live[count] = others[otherCount] = k;
-    detail::stage(c, laws_.data(), pairs, vectorCount);
-    count += hit;
-    otherCount += hit & !c.vectorDiscs;
-    vectorCount += hit & c.vectorDiscs;
-  }
-  // Second, the forces: the linear disc pairs many at a time, the others one by one.
-  scratchResults_.resize(9 * std::size_t(vectorCount));
-  double* r = scratchResults_.data();
-  const std::ptrdiff_t vc = vectorCount;
-  const detail::DiscResults out{r,          r + vc,     r + 2 * vc, r + 3 * vc, r + 4 * vc,
-                                r + 5 * vc, r + 6 * vc, r + 7 * vc, r + 8 * vc};
-  // Few contacts stay on one thread: a parallel region would cost more.
-  const int team = count >= 512 ? std::max(threads, 1) : 1;
+  const detail::LawColumns lawColumns{lawKn_.data(), lawKs_.data(), lawFriction_.data()};
+  ContactList& l = list_;
+  const std::size_t nc = l.size(), nv = l.vectorCount;
+  // The next history and the results of every contact: the linear disc pairs
+  // many at a time, the others one by one. Few contacts stay on one thread: a
+  // parallel region would cost more.
+  const int team = nc >= 512 ? std::max(threads, 1) : 1;
   if (team == 1) {
-    detail::linearDiscContacts(pairs, 0, vc, in, out);
-    for (std::ptrdiff_t q = 0; q < otherCount; ++q)
-      detail::evaluateContact(contacts[others[q]], in);
+    detail::linearDiscContacts(l, 0, nv, in, lawColumns);
+    detail::evaluateOthers(l, nv, nc, in);
   } else {
 #pragma omp parallel num_threads(team)
     {
-      const int size = omp_get_num_threads(), me = omp_get_thread_num();
-      detail::linearDiscContacts(pairs, vc * me / size, vc * (me + 1) / size, in, out);
-#pragma omp for schedule(dynamic, 64)
-      for (std::ptrdiff_t q = 0; q < otherCount; ++q)
-        detail::evaluateContact(contacts[others[q]], in);
+      const std::size_t size = std::size_t(omp_get_num_threads()),
+                        me = std::size_t(omp_get_thread_num());
+      detail::linearDiscContacts(l, nv * me / size, nv * (me + 1) / size, in, lawColumns);
+      const std::ptrdiff_t chunks = std::ptrdiff_t((nc - nv + 63) / 64);
+#pragma omp for schedule(dynamic)
+      for (std::ptrdiff_t q = 0; q < chunks; ++q)
+        detail::evaluateOthers(l, nv + 64 * std::size_t(q),
+                               std::min(nc, nv + 64 * std::size_t(q + 1)), in);
     }
   }
-  // Third, in list order: the results stored, the checks, the sums.
-  for (std::ptrdiff_t i = 0, q = 0; i < count; ++i) {
-    const std::ptrdiff_t k = live[i];
-    Contact& c = contacts[k];
-    if (c.vectorDiscs) {
-      const Vec2 f(out.fx[q], out.fy[q]), point(out.px[q], out.py[q]);
-      c.touching = true;
-      c.normal = Vec2(out.nx[q], out.ny[q]);
-      c.point = point;
-      c.overlap = out.overlap[q];
-      c.force = f;
-      c.shear = Vec2(out.sx[q], out.sy[q]);
-      if (bad == nc && (c.overlap > limit * c.size || !f.allFinite())) bad = k;
-      add(c.a, c.b, f, point);
-      ++q;
-    } else if (c.touching) {
-      if (bad == nc && detail::excessive(c, limit)) bad = k;
-      add(c.a, c.b, c.force, c.point);
-    }
+
+  // The sums, in list order (the same bits for any thread count), and the
+  // checks. Without a branch on touching (not predictable): a contact that
+  // does not touch has a zero force and adds nothing.
+  std::vector<char>& touchingFlags = scratchTouch_;  // for checkSpeeds
+  touchingFlags.assign(n, 0);
+  char* __restrict touching = touchingFlags.data();
+  Vec2* __restrict force = b.force.data();
+  double* __restrict torque = b.torque.data();
+  const Vec2* __restrict x = b.x.data();
+  const ContactHistory& next = l.history[1 - l.current];
+  const std::int32_t* __restrict touches = next.touching.data();
+  const int* __restrict pa = l.a.data(), * __restrict pb = l.b.data();
+  const double *__restrict fx = l.fx.data(), *__restrict fy = l.fy.data(),
+               *__restrict px = l.px.data(), *__restrict py = l.py.data(),
+               *__restrict overlap = l.overlap.data(), *__restrict minSize = l.minSize.data();
+  const double limit = maxOverlap;
+  std::size_t bad = nc;  // the first contact that stops the step
+  for (std::size_t k = 0; k < nc; ++k) {
+    const int i = pa[k], j = pb[k];
+    const Vec2 f(fx[k], fy[k]), point(px[k], py[k]);
+    const bool t = touches[k] != 0;
+    touching[i] |= t;
+    touching[j] |= t;
+    force[i] -= f;
+    force[j] += f;
+    torque[i] -= cross(point - x[i], f);
+    torque[j] += cross(point - x[j], f);
+    const bool stop =
+        t & ((overlap[k] > limit * minSize[k]) | !std::isfinite(f.x()) | !std::isfinite(f.y()));
+    bad = stop && bad == nc ? k : bad;
   }
-  if (bad < nc) {
-    // The step stops: the shear springs stay as they were.
-    for (std::ptrdiff_t k = 0; k < nc; ++k) contacts[k].shear = before[k];
-    const Contact& c = contacts[bad];
+  if (bad < nc)  // the history stays as it was (the step does not commit)
     throw Error("UNSTABLE OVERLAP",
-                "elements " + std::to_string(c.idA) + " and " + std::to_string(c.idB) +
-                    " overlap by " + formatNumber(c.overlap) + ", more than " +
+                "elements " + std::to_string(l.idA[bad]) + " and " + std::to_string(l.idB[bad]) +
+                    " overlap by " + formatNumber(l.overlap[bad]) + ", more than " +
                     formatNumber(maxOverlap) +
                     " of the smaller one's size: reduce the timestep or stiffen the material");
-  }
   if (!bonds_.empty()) bondForces(dt, vel, omega);
   // x - x is 0 for finite x and NaN otherwise: one branch-free pass, then the
   // slot is looked for only when some force is not finite.
@@ -511,14 +528,12 @@ void Assembly::step(double dt, const Vec2& gravity) {
       const std::vector<Vec2> f0 = b.force;
       const std::vector<double> torque0 = b.torque;
       updatePairs();
-      const std::vector<Contact> history = contacts_;
       try {
-        computeForces(dt, gravity, false);
+        computeForces(dt, gravity, false);  // the history stays: nothing commits
       } catch (...) {
-        b.force = f0, b.torque = torque0, contacts_ = history;
+        b.force = f0, b.torque = torque0;
         throw;
       }
-      contacts_ = history;
       for (int s = 0; s < n; ++s)
         if (b.started[s])
           b.force[s] = f0[s], b.torque[s] = torque0[s];
@@ -567,7 +582,10 @@ void Assembly::step(double dt, const Vec2& gravity) {
     if (integrator == Integrator::verlet) b.x = x0, b.angle = a0;
     throw;
   }
-  // Nothing can fail now: the bonds' breaks of this step stand.
+  // Nothing can fail now: the contacts' new history and the bonds' breaks of
+  // this step stand.
+  list_.current = 1 - list_.current;
+  viewValid_ = false;
   if (bondsPending_) {
     bonds_.swap(pendingBonds_);
     breaks_.insert(breaks_.end(), pendingBreaks_.begin(), pendingBreaks_.end());

@@ -1,18 +1,21 @@
 #pragma once
-// The force of one candidate pair (physics.md §4): narrow phase, spring-dashpot
-// normal force, incremental shear spring turned with the contact, Coulomb cap.
-// The step's contact loop runs it over every pair, on one thread or several.
-// The inputs are raw pointers: the loop stores bytes (flags), which may alias
-// anything, and would otherwise make the compiler reload every vector's data
-// pointer after each store.
-#include <algorithm>
+// The contact force law (physics.md §4): spring-dashpot normal force (linear
+// or Hertz), incremental shear spring turned with the contact, Coulomb cap.
+// Written once on plain doubles and without branches on the data, so that the
+// vector pass over disc pairs (disc_contacts.cpp) and the one-by-one pass over
+// the other pairs (contact_force.cpp) share it, and the compiler can run the
+// first several contacts to a vector register.
 #include <cmath>
+#include <cstddef>
 #include <memory>
 
-#include "sandflow/dem/assembly.hpp"
+#include "sandflow/dem/contact_list.hpp"
+#include "sandflow/dem/material.hpp"
+#include "sandflow/dem/shape.hpp"
 
 namespace sf::dem::detail {
 
+// The step's view of the elements, as raw arrays.
 struct ContactInputs {
   const Vec2* x;
   const double* angle;
@@ -20,93 +23,94 @@ struct ContactInputs {
   const Vec2* v;        // the velocities the dashpots see
   const double* w;
   const std::unique_ptr<Shape>* shape;
-  const PairLaw* laws;  // indexed by Contact::law
+  const PairLaw* laws;  // indexed by ContactList::law
   double dt;
 };
 
-// Updates c for this step: touching, normal, point, overlap, force and the
-// shear spring. The contact's cached law, size and damping must be current.
-[[gnu::always_inline]] inline void evaluateContact(Contact& c, const ContactInputs& in) {
-  const int i = c.a, j = c.b;
-  Manifold m;
-  // Disc pairs skip the dispatch (reach is a disc's radius).
-  const bool hit = c.discs ? collideDiscs(in.x[i], in.reach[i], in.x[j], in.reach[j], m)
-                           : collide(*in.shape[i], {in.x[i], in.angle[i]}, *in.shape[j],
-                                     {in.x[j], in.angle[j]}, m);
-  if (!hit) {
-    c.touching = false;
-    c.force = Vec2::Zero();
-    c.shear = Vec2::Zero();
-    return;
+// One touching contact: the manifold, the two bodies' centres and motion, the
+// law and the history.
+struct LawInput {
+  double nx, ny, overlap, px, py;  // unit normal a -> b, overlap > 0, point
+  double xi, yi, vix, viy, wi;     // body a
+  double xj, yj, vjx, vjy, wj;     // body b
+  double kn, ks, friction, damping, dt;
+  bool hertz;  // then: R*, E*, G* and whether the damping is fixed (else from zeta)
+  double radius, youngs, shearModulus;
+  bool fixedDamping;
+  bool touching;              // had a history
+  double onx, ony, osx, osy;  // the history: normal and shear spring
+};
+
+struct LawOutput {
+  double fx, fy;  // total force on b
+  double sx, sy;  // the new shear spring
+};
+
+[[gnu::always_inline]] inline LawOutput contactLaw(const LawInput& c) {
+  const double rix = c.px - c.xi, riy = c.py - c.yi, rjx = c.px - c.xj, rjy = c.py - c.yj;
+  // Relative velocity of b's surface against a's at the point (w x r).
+  const double vrx = (c.vjx + -c.wj * rjy) - (c.vix + -c.wi * riy);
+  const double vry = (c.vjy + c.wj * rjx) - (c.viy + c.wi * rix);
+  const double vn = vrx * c.nx + vry * c.ny;
+  const double vtx = vrx - vn * c.nx, vty = vry - vn * c.ny;
+  double kn = c.kn, ks = c.ks, fElastic = c.kn * c.overlap, cn = c.damping;
+  if (c.hertz) {  // stiffnesses grow with the contact radius sqrt(R* d)
+    const double root = std::sqrt(c.radius * c.overlap);
+    fElastic = 4.0 / 3.0 * c.youngs * root * c.overlap;
+    kn = 2.0 * c.youngs * root;
+    ks = 8.0 * c.shearModulus * root;
+    if (!c.fixedDamping) cn = c.damping * std::sqrt(kn);  // 2 zeta sqrt(m* kn)
   }
-  const PairLaw& law = in.laws[c.law];
-  const Vec2 ri = m.point - in.x[i], rj = m.point - in.x[j];
-  const Vec2 vrel = (in.v[j] + spin(in.w[j], rj)) - (in.v[i] + spin(in.w[i], ri));
-  const Vec2& nrm = m.normal;
-  const double vn = vrel.dot(nrm);
-  const Vec2 vt = vrel - vn * nrm;
-  double kn = law.kn, ks = law.ks, fElastic = law.kn * m.overlap;
-  if (law.hertz) {  // stiffnesses grow with the contact radius sqrt(R* d)
-    const double root = std::sqrt(c.radius * m.overlap);
-    fElastic = 4.0 / 3.0 * law.effectiveYoungs * root * m.overlap;
-    kn = 2.0 * law.effectiveYoungs * root;
-    ks = 8.0 * law.effectiveShear * root;
-  }
-  const double cn = law.hertz && law.damping < 0 ? c.damping * std::sqrt(kn) : c.damping;
-  const double fn = fElastic - cn * vn;  // along the normal, on j
+  const double fn = fElastic - cn * vn;  // along the normal, on b
 
   // Incremental shear spring, turned with the contact: by the rotation that
   // takes last step's normal to this one (the projection only sweeps up
-  // round-off).
-  Vec2 shear = Vec2::Zero();
-  if (c.touching) {
-    const double cs = c.normal.dot(nrm), sn = cross(c.normal, nrm);
-    shear = Vec2(cs * c.shear.x() - sn * c.shear.y(), sn * c.shear.x() + cs * c.shear.y());
-    shear -= shear.dot(nrm) * nrm;
-  }
-  shear -= ks * in.dt * vt;
+  // round-off). A new contact starts from zero.
+  const double cs = c.onx * c.nx + c.ony * c.ny, sn = c.onx * c.ny - c.ony * c.nx;
+  const double tx = cs * c.osx - sn * c.osy, ty = sn * c.osx + cs * c.osy;
+  const double along = tx * c.nx + ty * c.ny;
+  const double turnedX = tx - along * c.nx, turnedY = ty - along * c.ny;
+  const double ksdt = ks * c.dt;
+  double sx = (c.touching ? turnedX : 0.0) - ksdt * vtx;
+  double sy = (c.touching ? turnedY : 0.0) - ksdt * vty;
   const double ct = 0.5 * cn;
-  Vec2 ft = shear - ct * vt;
+  double ftx = sx - ct * vtx, fty = sy - ct * vty;
   // Friction bears on compression only: near separation the damping can make
-  // fn tensile, and |fn| there would add friction impulse (5% too much spin
-  // in an oblique impact).
-  const double cap = law.friction * std::max(fn, 0.0), ftn2 = ft.squaredNorm();
-  // Sliding: the spring holds what friction allows. Selected, not branched: a
-  // bed's contacts stick and slip unpredictably, and a mispredicted branch
-  // costs more than the square root.
+  // fn tensile, and |fn| there would add friction impulse (5% too much spin in
+  // an oblique impact). Sliding: the spring holds what friction allows;
+  // selected, not branched, since contacts stick and slip unpredictably.
+  const double cap = c.friction * (fn < 0.0 ? 0.0 : fn), ftn2 = ftx * ftx + fty * fty;
   const bool sliding = ftn2 > cap * cap;
   const double scale = cap / std::sqrt(ftn2 > 0 ? ftn2 : 1.0);
-  const double fx = ft.x() * scale, fy = ft.y() * scale;
-  const double sx = fx + ct * vt.x(), sy = fy + ct * vt.y();
-  ft = Vec2(sliding ? fx : ft.x(), sliding ? fy : ft.y());
-  shear = Vec2(sliding ? sx : shear.x(), sliding ? sy : shear.y());
-  c.touching = true;
-  c.normal = nrm;
-  c.point = m.point;
-  c.overlap = m.overlap;
-  c.force = fn * nrm + ft;
-  c.shear = shear;
+  const double slidX = ftx * scale, slidY = fty * scale;
+  const double heldX = slidX + ct * vtx, heldY = slidY + ct * vty;
+  ftx = sliding ? slidX : ftx;
+  fty = sliding ? slidY : fty;
+  sx = sliding ? heldX : sx;
+  sy = sliding ? heldY : sy;
+  return {fn * c.nx + ftx, fn * c.ny + fty, sx, sy};
 }
 
-// The first pass over the candidates: whether a pair may touch. Disc pairs are
-// tested here, without a branch (whether a bed's pairs touch is not
-// predictable), and cleared when they part; other shapes always go on to
-// evaluateContact.
-[[gnu::always_inline]] inline bool mayTouch(Contact& c, const ContactInputs& in) {
-  const Vec2 d = in.x[c.b] - in.x[c.a];
-  const double reach = in.reach[c.a] + in.reach[c.b];
-  const bool hit = !c.discs | (d.squaredNorm() < reach * reach);
-  if (!hit & c.touching) {  // parted since the last step: rare, so predictable
-    c.touching = false;
-    c.force = Vec2::Zero();
-    c.shear = Vec2::Zero();
-  }
-  return hit;
+// The law's inputs of contact k from the list, the elements and the pair's law
+// (the manifold is filled by the caller).
+[[gnu::always_inline]] inline LawInput lawInput(const ContactList& l, std::size_t k,
+                                                const ContactInputs& in) {
+  const int i = l.a[k], j = l.b[k];
+  const PairLaw& law = in.laws[l.law[k]];
+  const ContactHistory& h = l.now();
+  LawInput c;
+  c.xi = in.x[i].x(), c.yi = in.x[i].y(), c.vix = in.v[i].x(), c.viy = in.v[i].y(), c.wi = in.w[i];
+  c.xj = in.x[j].x(), c.yj = in.x[j].y(), c.vjx = in.v[j].x(), c.vjy = in.v[j].y(), c.wj = in.w[j];
+  c.kn = law.kn, c.ks = law.ks, c.friction = law.friction, c.damping = l.damping[k], c.dt = in.dt;
+  c.hertz = law.hertz, c.radius = l.radius[k], c.youngs = law.effectiveYoungs;
+  c.shearModulus = law.effectiveShear, c.fixedDamping = law.damping >= 0;
+  c.touching = h.touching[k] != 0;
+  c.onx = h.nx[k], c.ony = h.ny[k], c.osx = h.sx[k], c.osy = h.sy[k];
+  return c;
 }
 
-// Whether a touching contact stops the step: too deep, or a force that is not finite.
-inline bool excessive(const Contact& c, double maxOverlap) {
-  return c.touching && (c.overlap > maxOverlap * c.size || !c.force.allFinite());
-}
+// Contacts [begin, end) of the list that are not linear disc pairs, one by one
+// through the narrow-phase table: the next history and the results.
+void evaluateOthers(ContactList& l, std::size_t begin, std::size_t end, const ContactInputs& in);
 
 }  // namespace sf::dem::detail

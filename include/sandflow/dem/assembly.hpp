@@ -8,6 +8,7 @@
 
 #include "sandflow/dem/bodies.hpp"
 #include "sandflow/dem/bond.hpp"
+#include "sandflow/dem/contact_list.hpp"
 #include "sandflow/dem/dess.hpp"
 #include "sandflow/dem/material.hpp"
 #include "sandflow/dem/narrow_phase.hpp"
@@ -32,25 +33,18 @@ struct ElementDef {
   int id = -1;                       // < 0: the next free id
 };
 
-// A candidate pair from the broad phase and, while it touches, its contact.
-// The fields the force loop reads and writes come first (the accumulation
-// reads only the first cache line).
+// A candidate pair from the broad phase and, while it touches, its contact: a
+// copy made from the contact list (contact_list.hpp) for those who look.
 struct Contact {
-  int a, b;  // slots, a < b
-  bool touching = false;
-  bool discs = false;         // both discs: the narrow phase runs inline
-  bool vectorDiscs = false;   // discs with a linear law: many at a time (disc_contacts.hpp)
-  int law = 0;                // the pair's law, in the step's table (see prepareContact)
-  Vec2 force = Vec2::Zero();  // total contact force on b (on a: the opposite)
-  Vec2 point = Vec2::Zero();
-  Vec2 normal = Vec2::Zero();
+  int a, b;                   // slots, a < b
+  int idA, idB;               // element ids (stable across deletions)
   Vec2 shear = Vec2::Zero();  // tangential spring force on b (history)
+  bool touching = false;
+  bool discs = false;
+  double damping = 0;  // normal damping coefficient (see Assembly::prepareContact)
+  Vec2 normal = Vec2::Zero(), point = Vec2::Zero();
   double overlap = 0.0;
-  // Cached from the elements and materials until either changes (damping < 0:
-  // not yet): the normal damping coefficient (see prepareContact), the smaller
-  // element's contact size, the effective radius of curvature (Hertz).
-  double damping = -1, size = 0, radius = 0;
-  int idA = -1, idB = -1;  // element ids (stable across deletions)
+  Vec2 force = Vec2::Zero();  // total contact force on b (on a: the opposite)
 };
 
 // A source (physics.md §4): a held element that touches nothing and clones
@@ -103,8 +97,13 @@ class Assembly {
   Integrator integrator = Integrator::central;
   double maxOverlap = 0.5;
   int threads = 1;
+  // false: every pair one by one, none in the vector pass (a check that both
+  // give the same bits; takes effect at the next pair build).
+  bool vectorPass = true;
 
-  const std::vector<Contact>& contacts() const { return contacts_; }
+  // The candidate pairs and contacts as of the last step (made on demand).
+  const std::vector<Contact>& contacts() const;
+  const ContactList& contactList() const { return list_; }
 
   // Bonds. `bond` makes one between two elements at their closest surface
   // points (stiffness/strength < 0: from the elements' materials).
@@ -138,11 +137,12 @@ class Assembly {
 
  private:
   void computeForces(double dt, const Vec2& gravity, bool commit);
-  // Fills a contact's cached law, size, damping and radius.
-  void prepareContact(Contact& c) const;
-  // The pair-law table and the contacts' caches, when stale (or the contacts
-  // are new).
-  void refreshLaws(bool newContacts = false);
+  // Fills contact k's cached law, damping, size and radius.
+  void prepareContact(ContactList& l, std::size_t k) const;
+  // Whether the pair-law table or the contacts' caches are out of date (the
+  // pair list is then built again).
+  bool lawsStale() const;
+  void buildLaws();
   void spawnClones();
   void servoPlates(double dt);
   void checkSpeeds(double dt) const;
@@ -162,7 +162,9 @@ class Assembly {
   MaterialTable materials_;
   Bodies bodies_;
   Dess dess_;
-  std::vector<Contact> contacts_;
+  ContactList list_;
+  mutable std::vector<Contact> view_;  // contacts(), made from list_
+  mutable bool viewValid_ = false;
   std::vector<Vec2> builtAt_;
   std::vector<double> builtAngle_;
   bool pairsValid_ = false;
@@ -179,20 +181,14 @@ class Assembly {
   std::vector<Source> sources_;
   std::vector<int> plates_;  // slots with a servo, found again when generation_ changes
   std::uint64_t platesAt_ = 0;
-  // Per-step scratch, kept to avoid allocating in the step.
-  std::vector<Vec2> scratchShear_;           // the shear springs before the step, to undo it
-  std::vector<std::ptrdiff_t> scratchLive_;  // the candidates that may touch this step
-  std::vector<int> scratchPairIndex_;        // the vector pass's inputs (DiscPairs)
-  std::vector<double> scratchPairData_;
-  std::vector<double> scratchResults_;  // and its results (DiscResults)
-  std::vector<PairLaw> laws_;           // material pairs, i * materials + j
+  std::vector<PairLaw> laws_;                        // material pairs, i * materials + j
+  std::vector<double> lawKn_, lawKs_, lawFriction_;  // the same in columns
   std::uint64_t generation_ = 1;  // bumped by every change to masses, holds or the element set
   mutable std::uint64_t criticalAt_ = 0;
   mutable std::uint64_t criticalMaterials_ = 0;  // materials_.version() then
-  // Per-contact damping (Contact::damping) holds for these.
+  // The contacts' caches (prepareContact) hold for these.
   std::uint64_t dampingAt_ = 0, dampingMaterials_ = 0;
   mutable double critical_ = 0;
-  std::vector<char> scratchFlag_;
   std::vector<char> scratchTouch_;  // per element: in contact this step (computeForces)
   int nextBondId_ = 0;
   double time_ = 0;

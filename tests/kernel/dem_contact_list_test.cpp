@@ -1,0 +1,109 @@
+// The contact list's passes: the vector pass over linear disc pairs against
+// the one-by-one law, the history kept by a step that stops, and the history
+// carried over when the pairs are found again.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+
+#include "sandflow/core/error.hpp"
+#include "sandflow/dem/assembly.hpp"
+
+namespace sf::dem {
+namespace {
+
+// A cluster of overlapping discs of mixed sizes, moving and spinning at random,
+// no gravity and no walls: every pair is a linear disc pair.
+void cluster(Assembly& a, int count, unsigned seed) {
+  Material m{"grain"};
+  m.density = 2650;
+  m.kn = m.ks = 1e5;
+  m.restitution = 0.5;
+  m.friction = 0.4;
+  a.materials().add(m);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  const int side = int(std::ceil(std::sqrt(double(count))));
+  for (int i = 0; i < count; ++i) {
+    ElementDef d;
+    d.shape = std::make_unique<Disc>(0.8e-3 + 0.2e-3 * u(rng));
+    d.material = 1;
+    d.x = Vec2((i % side) * 1.9e-3, (i / side) * 1.9e-3) + 1e-4 * Vec2(u(rng), u(rng));
+    d.v = 0.05 * Vec2(u(rng) - 0.5, u(rng) - 0.5);
+    d.w = 50 * (u(rng) - 0.5);
+    a.add(std::move(d));
+  }
+}
+
+bool sameBits(const std::vector<Vec2>& p, const std::vector<Vec2>& q) {
+  return p.size() == q.size() && std::memcmp(p.data(), q.data(), p.size() * sizeof(Vec2)) == 0;
+}
+
+TEST(ContactList, VectorPassEqualsTheOneByOneLawBitForBit) {
+  for (int threads : {1, 2}) {
+    Assembly vec, one;
+    cluster(vec, 900, 7);
+    cluster(one, 900, 7);
+    one.vectorPass = false;
+    vec.threads = one.threads = threads;
+    const double dt = 2e-6;
+    std::size_t touching = 0;
+    for (int s = 0; s < 300; ++s) {
+      vec.step(dt, Vec2::Zero());
+      one.step(dt, Vec2::Zero());
+      touching += vec.touchingCount();
+    }
+    EXPECT_GT(touching, 300u * 150u) << "the cluster should keep many contacts";
+    EXPECT_TRUE(sameBits(vec.bodies().x, one.bodies().x)) << threads << " threads";
+    EXPECT_TRUE(sameBits(vec.bodies().v, one.bodies().v)) << threads << " threads";
+    ASSERT_EQ(vec.contacts().size(), one.contacts().size());
+    for (std::size_t k = 0; k < vec.contacts().size(); ++k) {
+      const Contact &p = vec.contacts()[k], &q = one.contacts()[k];
+      ASSERT_EQ(p.touching, q.touching);
+      ASSERT_EQ(p.force, q.force);
+      ASSERT_EQ(p.shear, q.shear);
+    }
+  }
+}
+
+TEST(ContactList, StepThatStopsKeepsTheContactHistory) {
+  Assembly a;
+  cluster(a, 100, 3);
+  for (int s = 0; s < 50; ++s) a.step(2e-6, Vec2::Zero());
+  const std::vector<Contact> before = a.contacts();
+  const std::vector<Vec2> x = a.bodies().x;
+  a.maxOverlap = 1e-6;  // every touching contact is now too deep
+  EXPECT_THROW(a.step(2e-6, Vec2::Zero()), Error);
+  ASSERT_EQ(a.contacts().size(), before.size());
+  for (std::size_t k = 0; k < before.size(); ++k) {
+    EXPECT_EQ(a.contacts()[k].touching, before[k].touching);
+    EXPECT_EQ(a.contacts()[k].normal, before[k].normal);
+    EXPECT_EQ(a.contacts()[k].shear, before[k].shear);
+  }
+  EXPECT_TRUE(sameBits(a.bodies().x, x));
+  // And the run goes on from there as if nothing had happened.
+  Assembly b;
+  cluster(b, 100, 3);
+  for (int s = 0; s < 51; ++s) b.step(2e-6, Vec2::Zero());
+  a.maxOverlap = 0.5;
+  a.step(2e-6, Vec2::Zero());
+  EXPECT_TRUE(sameBits(a.bodies().x, b.bodies().x));
+}
+
+TEST(ContactList, HistoryCarriesOverWhenThePairsAreFoundAgain) {
+  // The same run with the pair list rebuilt every step (touched) and rebuilt
+  // only as the skin requires: the shear springs carry over either way.
+  Assembly lazy, eager;
+  cluster(lazy, 400, 5);
+  cluster(eager, 400, 5);
+  for (int s = 0; s < 200; ++s) {
+    lazy.step(2e-6, Vec2::Zero());
+    eager.touched();
+    eager.step(2e-6, Vec2::Zero());
+  }
+  EXPECT_LT(lazy.broadPhaseBuilds(), eager.broadPhaseBuilds());
+  EXPECT_TRUE(sameBits(lazy.bodies().x, eager.bodies().x));
+}
+
+}  // namespace
+}  // namespace sf::dem
