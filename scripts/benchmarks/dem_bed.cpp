@@ -287,7 +287,8 @@ int main(int argc, char** argv) {
   double contactsFirst = 0, discContactsFirst = 0, kineticFirst = 0, translationalFirst = 0;
   for (int threads : timed > 0 ? threadList : std::vector<int>{}) {
     a.threads = threads;
-    double best = 1e300, worst = 0, bestSort = 0, bestNarrow = 0, bestIntegrate = 0;
+    double best = 1e300, worst = 0, bestSort = 0, bestNarrow = 0, bestIntegrate = 0, bestPass = 0,
+           bestSums = 0;
     double bestOther = 0, otherTotal = 0, timedTotal = 0;
     long builds = 0;
     for (int r = 0; r < reps; ++r) {
@@ -319,6 +320,8 @@ int main(int argc, char** argv) {
         bestSort = (after.sort - before.sort) / timed;
         bestNarrow = (after.narrow - before.narrow) / timed;
         bestIntegrate = (after.integrate - before.integrate) / timed;
+        bestPass = (after.contactPass - before.contactPass) / timed;
+        bestSums = (after.sums - before.sums) / timed;
         builds = long(a.broadPhaseBuilds() - builds0);
       }
     }
@@ -328,14 +331,15 @@ int main(int argc, char** argv) {
     std::printf(
         "N=%d threads=%d dt=%.3g settle_s=%.1f timed_s=%.3f reps=%d psps=%.4g psps_min=%.4g "
         "contacts_per_disc=%.3f disc_contacts_per_disc=%.3f kinetic=%.3g translational=%.3g "
-        "sort_us=%.1f narrow_us=%.1f forces_us=%.1f integrate_us=%.1f step_us=%.1f "
+        "sort_us=%.1f narrow_us=%.1f forces_us=%.1f pass_us=%.1f sums_us=%.1f integrate_us=%.1f "
+        "step_us=%.1f "
         "builds=%ld pairs_per_disc=%.3f deepest_overlap=%.3f deepest_step=%ld other_cpu_s=%.2f "
         "other_cpu_all_s=%.2f timed_all_s=%.2f\n",
         n, threads, dt, settleSeconds, best, reps, n * double(timed) / best,
         n * double(timed) / worst, contactsFirst, discContactsFirst, kineticFirst,
         translationalFirst, bestSort * 1e6, narrowOnly * 1e6, (bestNarrow - narrowOnly) * 1e6,
-        bestIntegrate * 1e6, best / timed * 1e6, builds, double(a.contacts().size()) / n, deepest,
-        deepestStep, bestOther, otherTotal, timedTotal);
+        bestPass * 1e6, bestSums * 1e6, bestIntegrate * 1e6, best / timed * 1e6, builds,
+        double(a.contacts().size()) / n, deepest, deepestStep, bestOther, otherTotal, timedTotal);
     std::fflush(stdout);
   }
   return 0;

@@ -398,68 +398,70 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
     }
   }
   const detail::ContactInputs in{b.x.data(),   b.angle.data(), b.reach.data(), vel.data(),
-                                 omega.data(), b.shape.data(), laws_.data(),   dt};
+                                 omega.data(), b.shape.data(), laws_.data(),   dt,
+                                 maxOverlap};
   const detail::LawColumns lawColumns{lawKn_.data(), lawKs_.data(), lawFriction_.data()};
   ContactList& l = list_;
   const std::size_t nc = l.size(), nv = l.vectorCount;
+  auto t0 = Clock::now();
   // The next history and the results of every contact: the linear disc pairs
   // many at a time, the others one by one. Few contacts stay on one thread: a
   // parallel region would cost more.
   const int team = nc >= 512 ? std::max(threads, 1) : 1;
+  std::size_t bad = nc;  // the first contact that stops the step
   if (team == 1) {
-    detail::linearDiscContacts(l, 0, nv, in, lawColumns);
-    detail::evaluateOthers(l, nv, nc, in);
+    const std::size_t first = detail::linearDiscContacts(l, 0, nv, in, lawColumns);
+    const std::size_t other = detail::evaluateOthers(l, nv, nc, in);
+    bad = first < nv ? first : other;  // the vector pairs come first in the list
   } else {
-#pragma omp parallel num_threads(team)
+#pragma omp parallel num_threads(team) reduction(min : bad)
     {
       const std::size_t size = std::size_t(omp_get_num_threads()),
                         me = std::size_t(omp_get_thread_num());
-      detail::linearDiscContacts(l, nv * me / size, nv * (me + 1) / size, in, lawColumns);
+      const std::size_t begin = nv * me / size, end = nv * (me + 1) / size;
+      const std::size_t first = detail::linearDiscContacts(l, begin, end, in, lawColumns);
+      if (first < end) bad = std::min(bad, first);
       const std::ptrdiff_t chunks = std::ptrdiff_t((nc - nv + 63) / 64);
 #pragma omp for schedule(dynamic)
-      for (std::ptrdiff_t q = 0; q < chunks; ++q)
-        detail::evaluateOthers(l, nv + 64 * std::size_t(q),
-                               std::min(nc, nv + 64 * std::size_t(q + 1)), in);
+      for (std::ptrdiff_t q = 0; q < chunks; ++q) {
+        const std::size_t from = nv + 64 * std::size_t(q), to = std::min(nc, from + 64);
+        const std::size_t stop = detail::evaluateOthers(l, from, to, in);
+        if (stop < to) bad = std::min(bad, stop);
+      }
     }
   }
-
-  // The sums, in list order (the same bits for any thread count), and the
-  // checks. Without a branch on touching (not predictable): a contact that
-  // does not touch has a zero force and adds nothing.
-  std::vector<char>& touchingFlags = scratchTouch_;  // for checkSpeeds
-  touchingFlags.assign(n, 0);
-  char* __restrict touching = touchingFlags.data();
-  Vec2* __restrict force = b.force.data();
-  double* __restrict torque = b.torque.data();
-  const Vec2* __restrict x = b.x.data();
-  const ContactHistory& next = l.history[1 - l.current];
-  const std::int32_t* __restrict touches = next.touching.data();
-  const int* __restrict pa = l.a.data(), * __restrict pb = l.b.data();
-  const double *__restrict fx = l.fx.data(), *__restrict fy = l.fy.data(),
-               *__restrict px = l.px.data(), *__restrict py = l.py.data(),
-               *__restrict overlap = l.overlap.data(), *__restrict minSize = l.minSize.data();
-  const double limit = maxOverlap;
-  std::size_t bad = nc;  // the first contact that stops the step
-  for (std::size_t k = 0; k < nc; ++k) {
-    const int i = pa[k], j = pb[k];
-    const Vec2 f(fx[k], fy[k]), point(px[k], py[k]);
-    const bool t = touches[k] != 0;
-    touching[i] |= t;
-    touching[j] |= t;
-    force[i] -= f;
-    force[j] += f;
-    torque[i] -= cross(point - x[i], f);
-    torque[j] += cross(point - x[j], f);
-    const bool stop =
-        t & ((overlap[k] > limit * minSize[k]) | !std::isfinite(f.x()) | !std::isfinite(f.y()));
-    bad = stop && bad == nc ? k : bad;
-  }
+  times_.contactPass += since(t0);
   if (bad < nc)  // the history stays as it was (the step does not commit)
     throw Error("UNSTABLE OVERLAP",
                 "elements " + std::to_string(l.idA[bad]) + " and " + std::to_string(l.idB[bad]) +
                     " overlap by " + formatNumber(l.overlap[bad]) + ", more than " +
                     formatNumber(maxOverlap) +
                     " of the smaller one's size: reduce the timestep or stiffen the material");
+
+  t0 = Clock::now();
+  // The sums, in list order (the same bits for any thread count). Without a
+  // branch on touching (not predictable): a contact that does not touch has
+  // a zero force and torques, and adds nothing.
+  std::vector<char>& touchingFlags = scratchTouch_;  // for checkSpeeds
+  touchingFlags.assign(n, 0);
+  char* __restrict touching = touchingFlags.data();
+  Vec2* __restrict force = b.force.data();
+  double* __restrict torque = b.torque.data();
+  const std::int32_t* __restrict touches = l.history[1 - l.current].touching.data();
+  const int* __restrict pa = l.a.data(), * __restrict pb = l.b.data();
+  const double* __restrict fx = l.fx.data(), * __restrict fy = l.fy.data(), * __restrict ta = l.ta.data(), * __restrict tb = l.tb.data();
+  for (std::size_t k = 0; k < nc; ++k) {
+    const int i = pa[k], j = pb[k];
+    const Vec2 f(fx[k], fy[k]);
+    const char t = char(touches[k]);
+    touching[i] |= t;
+    touching[j] |= t;
+    force[i] -= f;
+    force[j] += f;
+    torque[i] -= ta[k];
+    torque[j] += tb[k];
+  }
+  times_.sums += since(t0);
   if (!bonds_.empty()) bondForces(dt, vel, omega);
   // x - x is 0 for finite x and NaN otherwise: one branch-free pass, then the
   // slot is looked for only when some force is not finite.

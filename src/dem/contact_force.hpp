@@ -25,7 +25,16 @@ struct ContactInputs {
   const std::unique_ptr<Shape>* shape;
   const PairLaw* laws;  // indexed by ContactList::law
   double dt;
+  double maxOverlap;  // a touching contact deeper than this x its minSize stops the step
 };
+
+// Whether a touching contact stops the step: too deep, or a force that is not
+// finite (|f| <= max is false for infinities and NaN).
+[[gnu::always_inline]] inline bool stops(double overlap, double minSize, double fx, double fy,
+                                         double maxOverlap) {
+  constexpr double big = 1.7976931348623157e308;
+  return (overlap > maxOverlap * minSize) | !(std::abs(fx) <= big) | !(std::abs(fy) <= big);
+}
 
 // One touching contact: the manifold, the two bodies' centres and motion, the
 // law and the history.
@@ -110,7 +119,9 @@ struct LawOutput {
 }
 
 // Contacts [begin, end) of the list that are not linear disc pairs, one by one
-// through the narrow-phase table: the next history and the results.
-void evaluateOthers(ContactList& l, std::size_t begin, std::size_t end, const ContactInputs& in);
+// through the narrow-phase table: the next history and the results. Returns
+// the first that stops the step (see stops), or `end`.
+std::size_t evaluateOthers(ContactList& l, std::size_t begin, std::size_t end,
+                           const ContactInputs& in);
 
 }  // namespace sf::dem::detail

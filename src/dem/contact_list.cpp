@@ -5,7 +5,8 @@ namespace sf::dem {
 void ContactList::resize(std::size_t n) {
   for (auto* c : {&a, &b, &idA, &idB, &law}) c->resize(n);
   discs.resize(n);
-  for (auto* c : {&damping, &minSize, &radius, &fx, &fy, &px, &py, &overlap}) c->resize(n);
+  for (auto* c : {&damping, &minSize, &radius, &fx, &fy, &px, &py, &overlap, &ta, &tb})
+    c->resize(n);
   for (ContactHistory& h : history) {
     h.touching.resize(n);
     for (auto* c : {&h.nx, &h.ny, &h.sx, &h.sy}) c->resize(n);

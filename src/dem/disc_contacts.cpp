@@ -7,8 +7,8 @@
 namespace sf::dem::detail {
 
 SF_KERNEL_CLONES
-void linearDiscContacts(ContactList& l, std::size_t begin, std::size_t end, const ContactInputs& in,
-                        const LawColumns& laws) {
+std::size_t linearDiscContacts(ContactList& l, std::size_t begin, std::size_t end,
+                               const ContactInputs& in, const LawColumns& laws) {
   const double* __restrict x = in.x[0].data();  // Vec2 is two packed doubles
   const double* __restrict v = in.v[0].data();
   const double* __restrict w = in.w;
@@ -25,9 +25,12 @@ void linearDiscContacts(ContactList& l, std::size_t begin, std::size_t end, cons
                      *__restrict sxOut = next.sx.data(), *__restrict syOut = next.sy.data();
   double *__restrict fxOut = l.fx.data(), *__restrict fyOut = l.fy.data(),
                      *__restrict pxOut = l.px.data(), *__restrict pyOut = l.py.data(),
-                     *__restrict overlapOut = l.overlap.data();
-  const double dt = in.dt;
-#pragma omp simd
+                     *__restrict overlapOut = l.overlap.data(), *__restrict taOut = l.ta.data(),
+                     *__restrict tbOut = l.tb.data();
+  const double* __restrict minSize = l.minSize.data();
+  const double dt = in.dt, maxOverlap = in.maxOverlap;
+  std::size_t first = end;
+#pragma omp simd reduction(min : first)
   for (std::size_t k = begin; k < end; ++k) {
     const int i = pa[k], j = pb[k];
     LawInput c;
@@ -55,7 +58,14 @@ void linearDiscContacts(ContactList& l, std::size_t begin, std::size_t end, cons
     sxOut[k] = hit ? f.sx : 0.0, syOut[k] = hit ? f.sy : 0.0;
     fxOut[k] = hit ? f.fx : 0.0, fyOut[k] = hit ? f.fy : 0.0;
     pxOut[k] = c.px, pyOut[k] = c.py, overlapOut[k] = c.overlap;
+    // cross(point - centre, force), about each centre
+    const double ta = (c.px - c.xi) * f.fy - (c.py - c.yi) * f.fx;
+    const double tb = (c.px - c.xj) * f.fy - (c.py - c.yj) * f.fx;
+    taOut[k] = hit ? ta : 0.0, tbOut[k] = hit ? tb : 0.0;
+    const bool stop = hit & stops(c.overlap, minSize[k], f.fx, f.fy, maxOverlap);
+    first = stop && k < first ? k : first;
   }
+  return first;
 }
 
 }  // namespace sf::dem::detail

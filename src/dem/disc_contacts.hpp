@@ -16,8 +16,9 @@ struct LawColumns {
 };
 
 // Contacts [begin, end) of the list's linear disc pairs, touching or not: the
-// next history and the results.
-void linearDiscContacts(ContactList& l, std::size_t begin, std::size_t end, const ContactInputs& in,
-                        const LawColumns& laws);
+// next history and the results. Returns the first that stops the step (see
+// stops), or `end`.
+std::size_t linearDiscContacts(ContactList& l, std::size_t begin, std::size_t end,
+                               const ContactInputs& in, const LawColumns& laws);
 
 }  // namespace sf::dem::detail

@@ -33,9 +33,11 @@ struct ContactList {
   std::vector<double> damping, minSize, radius;
   ContactHistory history[2];
   int current = 0;  // the history in force
-  // The last evaluation: force on b (on a: the opposite), point, overlap.
-  // Meaningful where the current history says touching.
-  std::vector<double> fx, fy, px, py, overlap;
+  // The last evaluation: force on b (on a: the opposite), point, overlap, and
+  // the torques of the force about a's centre (to be subtracted) and b's
+  // (added). Meaningful where the current history says touching; zero force
+  // and torques where it does not.
+  std::vector<double> fx, fy, px, py, overlap, ta, tb;
   std::size_t vectorCount = 0;  // [0, vectorCount): disc pairs with a linear law
 
   std::size_t size() const { return a.size(); }
