@@ -3,6 +3,7 @@
 // carried over when the pairs are found again.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <random>
 
@@ -64,6 +65,37 @@ TEST(ContactList, VectorPassEqualsTheOneByOneLawBitForBit) {
       ASSERT_EQ(p.shear, q.shear);
     }
   }
+}
+
+// The cluster in a box of four walls, run with 1 and 2 threads: the vector
+// pass, the one-by-one pass (walls) and the sums split over threads give the
+// same bits.
+TEST(ContactList, ThreadCountDoesNotChangeTheResult) {
+  std::vector<Vec2> x[2], v[2];
+  for (int threads : {1, 2}) {
+    Assembly a;
+    cluster(a, 900, 11);
+    a.threads = threads;
+    const double lo = -0.9e-3, hi = 29 * 1.9e-3 + 0.9e-3;  // the outer discs touch
+    const Vec2 corners[4] = {{lo, lo}, {hi, lo}, {hi, hi}, {lo, hi}};
+    for (int k = 0; k < 4; ++k) {
+      const Vec2 from = corners[k], to = corners[(k + 1) % 4], seg = to - from;
+      ElementDef d;
+      d.shape = std::make_unique<Wall>(seg.norm(), 1e-4);
+      d.material = 1;
+      d.x = 0.5 * (from + to);
+      d.angle = std::atan2(seg.y(), seg.x());
+      d.hold = holdX | holdY | holdRotation;
+      a.add(std::move(d));
+    }
+    for (int s = 0; s < 400; ++s) a.step(2e-6, Vec2(0, -9.81));
+    std::size_t walls = 0;
+    for (const Contact& c : a.contacts()) walls += c.touching && !c.discs;
+    EXPECT_GT(walls, 10u) << "discs should press on the walls";
+    x[threads - 1] = a.bodies().x, v[threads - 1] = a.bodies().v;
+  }
+  EXPECT_TRUE(sameBits(x[0], x[1]));
+  EXPECT_TRUE(sameBits(v[0], v[1]));
 }
 
 TEST(ContactList, StepThatStopsKeepsTheContactHistory) {
