@@ -275,6 +275,7 @@ void Assembly::updatePairs() {
   // pair order (as the broad phase returns them).
   struct Kept {
     int a, b;
+    bool discs;
     std::ptrdiff_t old;  // the same pair in the old list, if it touched (else -1)
   };
   std::vector<Kept> kept[2];
@@ -311,7 +312,7 @@ void Assembly::updatePairs() {
     const bool discs =
         bodies_.shape[a]->type() == ShapeType::disc && bodies_.shape[b]->type() == ShapeType::disc;
     const bool linear = !laws_[bodies_.material[a] * nm + bodies_.material[b]].hertz;
-    kept[discs && linear && vectorPass ? 0 : 1].push_back({a, b, from});
+    kept[discs && linear && vectorPass ? 0 : 1].push_back({a, b, discs, from});
   }
   ContactList next;
   next.resize(kept[0].size() + kept[1].size());
@@ -322,8 +323,7 @@ void Assembly::updatePairs() {
     for (const Kept& e : run) {
       next.a[k] = e.a, next.b[k] = e.b;
       next.idA[k] = bodies_.id[e.a], next.idB[k] = bodies_.id[e.b];
-      next.discs[k] = bodies_.shape[e.a]->type() == ShapeType::disc &&
-                      bodies_.shape[e.b]->type() == ShapeType::disc;
+      next.discs[k] = e.discs;
       prepareContact(next, k);
       if (e.old >= 0) {
         const std::size_t o = std::size_t(e.old);
@@ -337,7 +337,7 @@ void Assembly::updatePairs() {
     }
   list_ = std::move(next);
   viewValid_ = false;
-  dampingAt_ = generation_;
+  lawsAt_ = generation_;
   slotsMoved_ = false;
   builtAt_ = bodies_.x;
   builtAngle_ = bodies_.angle;
@@ -362,8 +362,8 @@ void Assembly::prepareContact(ContactList& l, std::size_t k) const {
 
 bool Assembly::lawsStale() const {
   const int nm = materials_.size();
-  return dampingMaterials_ != materials_.version() || int(laws_.size()) != nm * nm ||
-         dampingAt_ != generation_;
+  return lawsMaterials_ != materials_.version() || int(laws_.size()) != nm * nm ||
+         lawsAt_ != generation_;
 }
 
 void Assembly::buildLaws() {
@@ -377,7 +377,7 @@ void Assembly::buildLaws() {
       lawKn_[i * nm + j] = law.kn, lawKs_[i * nm + j] = law.ks;
       lawFriction_[i * nm + j] = law.friction;
     }
-  dampingMaterials_ = materials_.version();
+  lawsMaterials_ = materials_.version();
 }
 
 void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocity) {
@@ -448,8 +448,12 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
   Vec2* __restrict force = b.force.data();
   double* __restrict torque = b.torque.data();
   const std::int32_t* __restrict touches = l.history[1 - l.current].touching.data();
-  const int* __restrict pa = l.a.data(), * __restrict pb = l.b.data();
-  const double* __restrict fx = l.fx.data(), * __restrict fy = l.fy.data(), * __restrict ta = l.ta.data(), * __restrict tb = l.tb.data();
+  const int* __restrict pa = l.a.data();
+  const int* __restrict pb = l.b.data();
+  const double* __restrict fx = l.fx.data();
+  const double* __restrict fy = l.fy.data();
+  const double* __restrict ta = l.ta.data();
+  const double* __restrict tb = l.tb.data();
   for (std::size_t k = 0; k < nc; ++k) {
     const int i = pa[k], j = pb[k];
     const Vec2 f(fx[k], fy[k]);

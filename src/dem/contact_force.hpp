@@ -3,8 +3,8 @@
 // or Hertz), incremental shear spring turned with the contact, Coulomb cap.
 // Written once on plain doubles and without branches on the data, so that the
 // vector pass over disc pairs (disc_contacts.cpp) and the one-by-one pass over
-// the other pairs (contact_force.cpp) share it, and the compiler can run the
-// first several contacts to a vector register.
+// the other pairs (contact_force.cpp) share it, and the compiler can run
+// several contacts in one vector register.
 #include <cmath>
 #include <cstddef>
 #include <memory>

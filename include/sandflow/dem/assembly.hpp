@@ -192,7 +192,7 @@ class Assembly {
   mutable std::uint64_t criticalAt_ = 0;
   mutable std::uint64_t criticalMaterials_ = 0;  // materials_.version() then
   // The contacts' caches (prepareContact) hold for these.
-  std::uint64_t dampingAt_ = 0, dampingMaterials_ = 0;
+  std::uint64_t lawsAt_ = 0, lawsMaterials_ = 0;
   mutable double critical_ = 0;
   std::vector<char> scratchTouch_;  // per element: in contact this step (computeForces)
   int nextBondId_ = 0;
