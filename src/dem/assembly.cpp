@@ -262,23 +262,21 @@ void Assembly::updatePairs() {
   double smallest = std::numeric_limits<double>::infinity();
   for (int s = 0; s < n; ++s) smallest = std::min(smallest, bodies_.extent[s]);
   skin_ = std::isfinite(smallest) ? 0.2 * smallest : 0.0;
-  std::vector<Box> boxes(n);
+  // The build's buffers are kept: a fresh list would fault in its pages.
+  std::vector<Box>& boxes = build_.boxes;
+  boxes.resize(n);
   for (int s = 0; s < n; ++s) {
     Box b = bodies_.shape[s]->bounds(bodies_.x[s], bodies_.angle[s]);
     boxes[s] = {b.lo - Vec2(skin_, skin_), b.hi + Vec2(skin_, skin_)};
   }
-  std::vector<std::pair<int, int>> pairs;
+  std::vector<std::pair<int, int>>& pairs = build_.pairs;
   dess_.findPairs(boxes, pairs);
 
   if (lawsStale()) buildLaws();
   // The new list: linear disc pairs first, then the others, each run in slot
   // pair order (as the broad phase returns them).
-  struct Kept {
-    int a, b;
-    bool discs;
-    std::ptrdiff_t old;  // the same pair in the old list, if it touched (else -1)
-  };
-  std::vector<Kept> kept[2];
+  std::vector<PairBuild::Kept>* kept = build_.kept;
+  kept[0].clear(), kept[1].clear();
   // Contact history carries over by element ids. Each run of the old list is
   // in slot-pair order, so while no slot has moved a merge does it (one
   // cursor per run); after a deletion, a map.
@@ -311,31 +309,43 @@ void Assembly::updatePairs() {
     }
     const bool discs =
         bodies_.shape[a]->type() == ShapeType::disc && bodies_.shape[b]->type() == ShapeType::disc;
+    // Boxes grown by the skin also pair discs that sit diagonally apart. Each
+    // disc moves at most half the skin before the next build, so two that are
+    // farther than their radii plus the skin cannot touch until then (the
+    // margin covers the rounding of the distances).
+    if (discs) {
+      const double gap = bodies_.reach[a] + bodies_.reach[b] + skin_;
+      if ((bodies_.x[a] - bodies_.x[b]).squaredNorm() > gap * gap * (1 + 1e-12)) continue;
+    }
     const bool linear = !laws_[bodies_.material[a] * nm + bodies_.material[b]].hertz;
     kept[discs && linear && vectorPass ? 0 : 1].push_back({a, b, discs, from});
   }
-  ContactList next;
+  // The new list goes into the spare one; every column of every contact is
+  // written (a reused list holds the contacts of an older build).
+  ContactList& next = build_.spare;
   next.resize(kept[0].size() + kept[1].size());
   next.vectorCount = kept[0].size();
+  next.current = 0;
   ContactHistory& h = next.history[0];
   std::size_t k = 0;
-  for (const std::vector<Kept>& run : kept)
-    for (const Kept& e : run) {
+  for (int run = 0; run < 2; ++run)
+    for (const PairBuild::Kept& e : kept[run]) {
       next.a[k] = e.a, next.b[k] = e.b;
       next.idA[k] = bodies_.id[e.a], next.idB[k] = bodies_.id[e.b];
       next.discs[k] = e.discs;
       prepareContact(next, k);
-      if (e.old >= 0) {
-        const std::size_t o = std::size_t(e.old);
-        h.touching[k] = 1;
-        h.nx[k] = oldHistory.nx[o], h.ny[k] = oldHistory.ny[o];
-        h.sx[k] = oldHistory.sx[o], h.sy[k] = oldHistory.sy[o];
-        next.fx[k] = old.fx[o], next.fy[k] = old.fy[o];
-        next.px[k] = old.px[o], next.py[k] = old.py[o], next.overlap[k] = old.overlap[o];
-      }
+      const bool carried = e.old >= 0;
+      const std::size_t o = carried ? std::size_t(e.old) : 0;
+      h.touching[k] = carried;
+      h.nx[k] = carried ? oldHistory.nx[o] : 0.0, h.ny[k] = carried ? oldHistory.ny[o] : 0.0;
+      h.sx[k] = carried ? oldHistory.sx[o] : 0.0, h.sy[k] = carried ? oldHistory.sy[o] : 0.0;
+      next.fx[k] = carried ? old.fx[o] : 0.0, next.fy[k] = carried ? old.fy[o] : 0.0;
+      next.px[k] = carried ? old.px[o] : 0.0, next.py[k] = carried ? old.py[o] : 0.0;
+      next.overlap[k] = carried ? old.overlap[o] : 0.0;
+      next.ta[k] = 0.0, next.tb[k] = 0.0;
       ++k;
     }
-  list_ = std::move(next);
+  std::swap(list_, next);
   viewValid_ = false;
   lawsAt_ = generation_;
   slotsMoved_ = false;

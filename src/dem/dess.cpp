@@ -67,7 +67,8 @@ void Dess::findPairs(const std::vector<Box>& boxes, std::vector<std::pair<int, i
   if (!(stripWidth > 0)) stripWidth = 1;
   const int strips = int((highest - lowest) / stripWidth) + 1;
   auto strip = [&](double v) { return std::min(strips - 1, int((v - lowest) / stripWidth)); };
-  members_.assign(strips, {});
+  members_.resize(strips);
+  for (std::vector<int>& m : members_) m.clear();  // keeps each strip's capacity
   for (int k = 0; k < n; ++k) {
     const int e = order_[k];
     for (int s = strip(boxes[e].lo[other]), last = strip(boxes[e].hi[other]); s <= last; ++s)
@@ -91,7 +92,23 @@ void Dess::findPairs(const std::vector<Box>& boxes, std::vector<std::pair<int, i
       }
     }
   }
-  std::sort(pairs.begin(), pairs.end());
+  sortPairs(n, pairs);
+}
+
+// The pairs come strip by strip: counted by their first slot into place, then
+// each slot's few partners sorted (O(pairs + N), where a sort of all pairs
+// cost more than the sweep).
+void Dess::sortPairs(int n, std::vector<std::pair<int, int>>& pairs) {
+  start_.assign(std::size_t(n) + 1, 0);
+  for (const auto& p : pairs) ++start_[p.first + 1];
+  for (int i = 0; i < n; ++i) start_[i + 1] += start_[i];
+  sorted_.resize(pairs.size());
+  for (const auto& p : pairs) sorted_[start_[p.first]++] = p;
+  for (int i = n; i > 0; --i) start_[i] = start_[i - 1];  // back to each slot's first
+  start_[0] = 0;
+  for (int i = 0; i < n; ++i)
+    std::sort(sorted_.begin() + start_[i], sorted_.begin() + start_[i + 1]);
+  pairs.swap(sorted_);
 }
 
 }  // namespace sf::dem

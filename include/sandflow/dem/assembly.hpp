@@ -168,6 +168,17 @@ class Assembly {
   Bodies bodies_;
   Dess dess_;
   ContactList list_;
+  struct PairBuild {  // updatePairs' buffers, kept from build to build
+    struct Kept {
+      int a, b;
+      bool discs;
+      std::ptrdiff_t old;  // the same pair in the old list, if it touched (else -1)
+    };
+    std::vector<Box> boxes;
+    std::vector<std::pair<int, int>> pairs;
+    std::vector<Kept> kept[2];  // linear disc pairs, the others
+    ContactList spare;          // the list before last, reused for the next one
+  } build_;
   mutable std::vector<Contact> view_;  // contacts(), made from list_
   mutable bool viewValid_ = false;
   std::vector<Vec2> builtAt_;
