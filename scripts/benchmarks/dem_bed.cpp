@@ -17,6 +17,11 @@
 //   --fine S K        ... and every K steps after step S (to resolve the bed's
 //                     vertical oscillation, tens of ms, without printing all of it)
 //   --diagnose        where the kinetic energy sits at the end of the settle
+//   --beside FILE     for timing beside another code on the other core: the
+//                     settle and the 1-thread phase run on CPU 0 alone; then
+//                     the 1-thread phase is repeated, one line "beside
+//                     start=<unix s> end=<unix s> psps=<x>" each, until FILE
+//                     exists; then the other thread counts, on every CPU
 //   --restitution E   not the benchmark: another restitution (default 0.5) or
 //   --friction M      friction coefficient (default 0.5), to see what damps
 //                     the settle's residual motion
@@ -43,7 +48,9 @@
 #include <string>
 #include <vector>
 
+#include <sched.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "sandflow/dem/assembly.hpp"
@@ -56,6 +63,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+double unixSeconds() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
 // Contacts of each slot (walls included as partners).
@@ -186,6 +196,7 @@ int main(int argc, char** argv) {
   int reps = 1, trace = 0, fine = 0;
   long fineFrom = 0;
   bool diag = false;
+  std::string beside;  // --beside FILE
   double restitution = 0.5, friction = 0.5;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--reps") && i + 1 < argc)
@@ -198,6 +209,8 @@ int main(int argc, char** argv) {
       restitution = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--friction") && i + 1 < argc)
       friction = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--beside") && i + 1 < argc)
+      beside = argv[++i];
     else if (!std::strcmp(argv[i], "--diagnose"))
       diag = true;
     else
@@ -215,6 +228,19 @@ int main(int argc, char** argv) {
 
   Assembly a;
   a.threads = *std::max_element(threadList.begin(), threadList.end());
+  // Beside another code: this one keeps to CPU 0 until that one is done.
+  cpu_set_t everyCpu;
+  sched_getaffinity(0, sizeof everyCpu, &everyCpu);
+  if (!beside.empty()) {
+    if (std::find(threadList.begin(), threadList.end(), 1) == threadList.end())
+      threadList.push_back(1);
+    std::sort(threadList.begin(), threadList.end());
+    cpu_set_t first;
+    CPU_ZERO(&first);
+    CPU_SET(0, &first);
+    if (sched_setaffinity(0, sizeof first, &first) != 0) std::perror("sched_setaffinity");
+    a.threads = 1;
+  }
   // The fall's impacts press discs deep at this stiffness: up to 0.57 of the
   // smaller radius at N = 100,000, past sandflow's default safety limit of 0.5
   // (LAMMPS has none). The settled bed is what is timed, so the limit is
@@ -324,6 +350,24 @@ int main(int argc, char** argv) {
         bestSums = (after.sums - before.sums) / timed;
         builds = long(a.broadPhaseBuilds() - builds0);
       }
+    }
+    // The same phase again and again, each stamped with the wall clock, until
+    // the code beside is done; then every CPU for the next thread count.
+    if (!beside.empty() && threads == 1) {
+      struct stat st;
+      while (stat(beside.c_str(), &st) != 0) {
+        const double start = unixSeconds();
+        double seconds = 0;
+        for (long s = 0; s < timed; ++s) {
+          const auto t0 = Clock::now();
+          a.step(dt, g);
+          seconds += since(t0);
+        }
+        std::printf("beside start=%.3f end=%.3f psps=%.4g\n", start, unixSeconds(),
+                    n * double(timed) / seconds);
+        std::fflush(stdout);
+      }
+      sched_setaffinity(0, sizeof everyCpu, &everyCpu);
     }
     double narrowOnly = 1e300;
     for (int r = 0; r < 50; ++r) narrowOnly = std::min(narrowOnly, narrowPass(a, threads));
