@@ -81,6 +81,7 @@ int addDiscs(sim::Manager& m, int n, double fraction, unsigned seed) {
 
 struct Split {
   double total = 0, bulk = 0, covered = 0, fill = 0, coverage = 0, forces = 0, dem = 0;
+  double measure = 0, sort = 0, cellList = 0;  // parts of coverage
   double mlups = 0;
   std::size_t cells = 0;
 };
@@ -100,6 +101,9 @@ Split timeSteps(sim::Manager& m, int steps) {
   s.fill = (l.fill - l0.fill) / steps;
   s.coverage = (m.coupler().times().coverage - c0.coverage) / steps;
   s.forces = (m.coupler().times().forces - c0.forces) / steps;
+  s.measure = (m.coupler().times().measure - c0.measure) / steps;
+  s.sort = (m.coupler().times().sort - c0.sort) / steps;
+  s.cellList = (m.coupler().times().cells - c0.cells) / steps;
   s.dem = (m.times().elements - m0.elements) / steps;
   s.mlups = double(m.lattice().nodes()) / s.total / 1e6;
   s.cells = m.coupler().coveredCells();
@@ -172,9 +176,10 @@ int main(int argc, char** argv) {
     addDiscs(m, n, 0.10, 11);
     const Split t = timeSteps(m, steps);
     std::printf(
-        "total %.2f bulk %.2f covered %.2f fill %.2f ratio %.2f forces %.2f DEM %.2f ms/step\n",
+        "total %.2f bulk %.2f covered %.2f fill %.2f ratio %.2f (measure %.2f sort %.2f cells "
+        "%.2f) forces %.2f DEM %.2f ms/step\n",
         t.total * 1e3, t.bulk * 1e3, t.covered * 1e3, t.fill * 1e3, t.coverage * 1e3,
-        t.forces * 1e3, t.dem * 1e3);
+        t.measure * 1e3, t.sort * 1e3, t.cellList * 1e3, t.forces * 1e3, t.dem * 1e3);
     return 0;
   }
   bench::measureBandwidth(512, 6, {threads});

@@ -72,8 +72,19 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
 
   // 1. Coverage of whatever moved (or changed shape) since it was measured,
   //    kept to the cells that hold bulk fluid.
+  // Each solid's cells, then their runs of consecutive nodes while the cells
+  // are still in cache.
   auto measure = [&](Cached& c, const Footprint& f, const Vec2& reference) {
     cover(f, reference, grid, settings.subcells, c.cells);
+    c.runs.clear();
+    std::uint32_t last = 0;
+    for (std::size_t m = 0; m < c.cells.size(); ++m) {
+      // Nodes fit 32 bits (the lattice's size limit is far below).
+      const auto node = std::uint32_t(lattice.nodeIndex(c.cells[m].i, c.cells[m].j));
+      if (m == 0 || node != last + 1) c.runs.push_back({node, std::int32_t(m), 0});
+      ++c.runs.back().length;
+      last = node;
+    }
   };
 #pragma omp parallel for schedule(dynamic, 4) num_threads(threads) if (n >= 16)
   for (int s = 0; s < n; ++s) {
@@ -84,86 +95,46 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     }
     const dem::Shape& shape = *b.shape[s];
     if (!stale(c, b.id[s], b.x[s], b.angle[s], shape.area(), b.reach[s], 0, false)) continue;
-    std::vector<CellCover> kept = std::move(c.cells);  // keep its capacity
+    std::vector<CellCover> kept = std::move(c.cells);  // keep their capacity
+    std::vector<Run> keptRuns = std::move(c.runs);
     kept.clear();
-    c = Cached{b.id[s], b.x[s], b.angle[s], shape.area(), b.reach[s], 0, false, std::move(kept)};
+    c = Cached{b.id[s], b.x[s], b.angle[s],      shape.area(),       b.reach[s],
+               0,       false,  std::move(kept), std::move(keptRuns)};
     if (const auto f = footprintOf(shape, b.x[s], b.angle[s])) measure(c, *f, b.x[s]);
   }
   for (std::size_t k = 0; k < circles.size(); ++k) {
     const lb::CircleObstacle& o = circles[k];
     Cached& c = circles_[k];
     if (!stale(c, o.id, o.centre, 0, 0, 0, o.radius, o.outside)) continue;
-    c = Cached{o.id, o.centre, 0, 0, 0, o.radius, o.outside, {}};
+    c = Cached{o.id, o.centre, 0, 0, 0, o.radius, o.outside, {}, {}};
     measure(c, *circleFootprint(o.centre, o.radius, o.outside), o.centre);
   }
 
-  // 2. One piece per solid per cell, solid by solid (the order the force sums
-  //    keep), then the pieces in node order and each node's pieces made a cell.
+  const auto t1 = Clock::now();
+  times_.measure += std::chrono::duration<double>(t1 - t0).count();
+  // 2. The pieces (each solid's cells, solid by solid: the order the force
+  //    sums keep) in node order, and each node's pieces made a cell.
   const int owners = n + int(circles.size());
-  auto coverOf = [&](int owner) -> const std::vector<CellCover>& {
-    return owner < n ? elements_[owner].cells : circles_[owner - n].cells;
-  };
   pieceStart_.assign(owners + 1, 0);
-  for (int o = 0; o < owners; ++o) pieceStart_[o + 1] = pieceStart_[o] + coverOf(o).size();
-  pieces_.resize(pieceStart_[owners]);
-  keys_.resize(pieces_.size());
-#pragma omp parallel for schedule(dynamic, 16) num_threads(threads) if (owners >= 64)
+  runs_.clear(), runOwner_.clear();
   for (int o = 0; o < owners; ++o) {
-    const std::vector<CellCover>& from = coverOf(o);
-    const int owner = o < n ? o : -1 - (o - n);
-    for (std::size_t k = pieceStart_[o], m = 0; m < from.size(); ++k, ++m) {
-      const CellCover& cc = from[m];
-      pieces_[k] = {0, owner, cc.eps, cc.arm, cc.interior};
-      keys_[k] = std::uint32_t(lattice.nodeIndex(cc.i, cc.j));  // fits: see sortByNode
-    }
+    const Cached& c = coverOf(o);
+    pieceStart_[o + 1] = pieceStart_[o] + c.cells.size();
+    runs_.insert(runs_.end(), c.runs.begin(), c.runs.end());
+    runOwner_.insert(runOwner_.end(), c.runs.size(), o);
   }
-  sortByNode();
+  groupRuns();
+  const auto t2 = Clock::now();
+  times_.sort += std::chrono::duration<double>(t2 - t1).count();
   // Rigid velocities (vx, vy, w) of the owners: elements as they are, or
   // solved with the exchange they will cause; circles as prescribed.
   velocity_.resize(n);
   for (int s = 0; s < n; ++s) velocity_[s] = Vec3(b.v[s].x(), b.v[s].y(), b.w[s]);
   const double toLattice = lattice.params().dt / lattice.params().h;
-  // The cells: where the sorted nodes change (sortByNode counted them chunk by
-  // chunk), each filled by the chunk its first piece lies in (any thread
-  // count, the same list). Explicitly coupled, each cell gets its solid velocity at once
-  // and each chunk notes its first fastest cell.
   std::vector<lb::CoveredCell>& cells = cellsBuffer_;  // reused: no fresh pages per step
-  const std::ptrdiff_t count = std::ptrdiff_t(order_.size());
-  const std::ptrdiff_t chunks = (count + kChunk - 1) / kChunk;
-  auto starts = [&](std::ptrdiff_t k) { return k == 0 || keys_[k] != keys_[k - 1]; };
-  for (std::ptrdiff_t c = 0; c < chunks; ++c) chunkCells_[c + 1] += chunkCells_[c];
-  const std::size_t total = chunkCells_[chunks];
-  cells.resize(total), epsSum_.resize(total), cellStart_.resize(total + 1);
-  cellStart_[total] = std::int32_t(count);
   const bool blendNow = !settings.implicit;
-  chunkFastest_.assign(chunks, {0.0, -1});
-#pragma omp parallel for schedule(static) num_threads(threads) if (chunks > 1)
-  for (std::ptrdiff_t c = 0; c < chunks; ++c) {
-    std::int32_t cell = chunkCells_[c];
-    std::pair<double, std::int32_t> best{0.0, -1};
-    for (std::ptrdiff_t k = c * kChunk; k < std::min(count, (c + 1) * kChunk); ++k) {
-      if (!starts(k)) continue;
-      const std::uint32_t node = keys_[k];
-      double sum = 0;
-      std::ptrdiff_t end = k;
-      for (; end < count && keys_[end] == node; ++end) {
-        Piece& p = pieces_[order_[end]];
-        p.cell = cell;
-        sum += p.eps;
-      }
-      const bool interior = end - k == 1 && pieces_[order_[k]].interior;
-      cellStart_[cell] = std::int32_t(k);
-      epsSum_[cell] = sum;
-      cells[cell] = {node, std::min(1.0, sum), 0.0, 0.0, interior};
-      if (blendNow) {
-        const Vec2 u = cellVelocity(k, end, sum, circles, toLattice);
-        cells[cell].ux = u.x(), cells[cell].uy = u.y();
-        if (!interior && u.squaredNorm() > best.first) best = {u.squaredNorm(), cell};
-      }
-      ++cell;
-    }
-    chunkFastest_[c] = best;
-  }
+  fillCells(circles, toLattice, blendNow, cells);
+  const std::size_t total = cells.size();
   if (!blendNow) {
     solveVelocities(lattice, assembly, settings, cells, gravity);
     blendVelocities(lattice, circles, cells);
@@ -188,15 +159,28 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   for (const auto& [u2, c] : chunkFastest_) {
     if (!(u2 > fastest2)) continue;
     fastest2 = u2;
-    const int owner = pieces_[order_[cellStart_[c]]].owner;
-    fastest_.element = owner >= 0 ? b.id[owner] : -1;
-    fastest_.obstacle = owner < 0 ? circles[-1 - owner].id : -1;
+    const int owner = pieceOwner_[order_[cellStart_[c]]];
+    fastest_.element = owner < n ? b.id[owner] : -1;
+    fastest_.obstacle = owner >= n ? circles[owner - n].id : -1;
   }
   fastest_.mach = std::sqrt(fastest2);
-  cells_ = cells.size();
-  // Ours now holds the old list; the new one ascends by node (sortByNode).
+  cells_ = total;
+  times_.cells += since(t2);
+  // Ours now holds the old list; the new one ascends by node (groupRuns).
   lattice.swapCoveredCells(cells, settings.equilibriumInterior, true);
   times_.coverage += since(t0);
+}
+
+// The rigid velocity of an owner at arm from its reference point.
+[[gnu::always_inline]] inline Vec2 Coupler::ownerVelocity(
+    std::int32_t owner, const Vec2& arm, const std::vector<lb::CircleObstacle>& circles) const {
+  const std::int32_t n = std::int32_t(elements_.size());
+  if (owner < n) {
+    const Vec3& v = velocity_[owner];
+    return Vec2(v.x(), v.y()) + spin(v.z(), arm);
+  }
+  const lb::CircleObstacle& o = circles[owner - n];
+  return o.velocity + spin(o.spin, arm);
 }
 
 // Each cell's solid velocity: the coverage-weighted mean of its owners' rigid
@@ -206,11 +190,9 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     const std::vector<lb::CircleObstacle>& circles, double toLattice) const {
   double ux = 0, uy = 0;
   for (std::ptrdiff_t k = first; k < last; ++k) {
-    const Piece& p = pieces_[order_[k]];
-    const Vec2 v = p.owner >= 0
-                       ? Vec2(velocity_[p.owner].x(), velocity_[p.owner].y()) +
-                             spin(velocity_[p.owner].z(), p.arm)
-                       : circles[-1 - p.owner].velocity + spin(circles[-1 - p.owner].spin, p.arm);
+    const std::int32_t g = order_[k];
+    const CellCover& p = piece(g);
+    const Vec2 v = ownerVelocity(pieceOwner_[g], p.arm, circles);
     const double weight = p.eps / epsSum * toLattice;
     ux += weight * v.x();
     uy += weight * v.y();
@@ -262,63 +244,125 @@ void Coupler::radixSort(std::vector<std::uint32_t>& keys, std::vector<std::int32
   }
 }
 
-// The pieces in node order (order_, with keys_ sorted alongside), equal nodes
-// in piece order: what a stable sort of all pieces gives. A solid's pieces
-// come row by row, so they form runs of consecutive nodes, a few per solid:
-// the runs are sorted, laid end to end, and only where runs overlap (cells
-// that several solids share) are their pieces sorted one by one.
-void Coupler::sortByNode() {
-  const std::size_t count = keys_.size();
-  runFirst_.clear(), runKeys_.clear();
-  for (std::size_t k = 0; k < count; ++k)
-    if (k == 0 || keys_[k] != keys_[k - 1] + 1) {
-      runFirst_.push_back(std::int32_t(k));
-      runKeys_.push_back(keys_[k]);
-    }
-  runFirst_.push_back(std::int32_t(count));
-  const std::vector<std::int32_t>& first = runFirst_;
-  radixSort(runKeys_, runOrder_);
-  sortedKeys_.resize(count), order_.resize(count);
-  // Alongside, per chunk of kChunk sorted pieces, how many start a cell.
-  chunkCells_.assign((count + kChunk - 1) / kChunk + 1, 0);
-  auto allStart = [&](std::size_t a, std::size_t b) {
-    for (std::size_t e; a < b; a = e) {
-      e = std::min<std::size_t>(b, (a / kChunk + 1) * kChunk);
-      chunkCells_[a / kChunk + 1] += std::int32_t(e - a);
-    }
-  };
-  std::size_t out = 0;
-  const std::size_t runs = runOrder_.size();
-  for (std::size_t r = 0; r < runs;) {
-    // A group: runs whose node ranges overlap, one after another.
-    std::size_t end = r + 1;
-    auto last = [&](std::size_t q) {
-      const std::int32_t run = runOrder_[q];
-      return keys_[first[run + 1] - 1];
-    };
-    std::uint32_t reach = last(r);
-    while (end < runs && runKeys_[end] <= reach) reach = std::max(reach, last(end++));
-    if (end == r + 1) {
-      const std::size_t from = out;
-      for (std::int32_t k = first[runOrder_[r]]; k < first[runOrder_[r] + 1]; ++k)
-        sortedKeys_[out] = keys_[k], order_[out++] = k;
-      allStart(from, out);
+// The runs in node order, laid end to end: a run that overlaps no other is a
+// group of its own, whose cells are its pieces; runs that overlap (cells that
+// several solids share) form one group, whose pieces are sorted one by one by
+// node and piece. Each group's first cell and first entry of order_ are
+// counted here, so that fillCells can fill the groups in parallel.
+void Coupler::groupRuns() {
+  const std::size_t runs = runs_.size();
+  runKeys_.resize(runs);
+  for (std::size_t r = 0; r < runs; ++r) runKeys_[r] = runs_[r].node;
+  radixSort(runKeys_, runOrder_);  // stable: equal first nodes in owner order
+  groups_.clear(), groupPieces_.clear();
+  std::int32_t cellCount = 0, entries = 0;
+  auto lastNode = [&](std::int32_t run) { return runs_[run].node + runs_[run].length - 1; };
+  for (std::size_t q = 0; q < runs;) {
+    std::size_t end = q + 1;
+    std::uint32_t reach = lastNode(runOrder_[q]);
+    while (end < runs && runKeys_[end] <= reach)
+      reach = std::max(reach, lastNode(runOrder_[end++]));
+    const Run& first = runs_[runOrder_[q]];
+    if (end == q + 1) {
+      groups_.push_back({runOrder_[q], first.length, cellCount, entries});
+      cellCount += first.length, entries += first.length;
     } else {
-      const std::size_t from = out;
-      for (std::size_t q = r; q < end; ++q)
-        for (std::int32_t k = first[runOrder_[q]]; k < first[runOrder_[q] + 1]; ++k)
-          sortedKeys_[out] = keys_[k], order_[out++] = k;
-      std::sort(order_.begin() + from, order_.begin() + out, [&](std::int32_t x, std::int32_t y) {
-        return keys_[x] != keys_[y] ? keys_[x] < keys_[y] : x < y;
-      });
-      for (std::size_t q = from; q < out; ++q) {
-        sortedKeys_[q] = keys_[order_[q]];
-        chunkCells_[q / kChunk + 1] += q == from || sortedKeys_[q] != sortedKeys_[q - 1];
+      // The pieces of the overlapping runs, by node, equal nodes by piece.
+      const std::size_t from = groupPieces_.size();
+      for (std::size_t k = q; k < end; ++k) {
+        const std::int32_t r = runOrder_[k];
+        const std::int32_t g0 = std::int32_t(pieceStart_[runOwner_[r]]) + runs_[r].first;
+        for (std::int32_t t = 0; t < runs_[r].length; ++t)
+          groupPieces_.push_back({runs_[r].node + std::uint32_t(t), g0 + t});
+      }
+      std::sort(groupPieces_.begin() + from, groupPieces_.end());
+      std::int32_t distinct = 0;
+      for (std::size_t k = from; k < groupPieces_.size(); ++k)
+        distinct += k == from || groupPieces_[k].first != groupPieces_[k - 1].first;
+      const auto keyed = groupPieces_.size() - from;
+      groups_.push_back({-1 - std::int32_t(from), std::int32_t(keyed), cellCount, entries});
+      cellCount += distinct, entries += std::int32_t(keyed);
+    }
+    q = end;
+  }
+  groups_.push_back({0, 0, cellCount, entries});  // the end
+}
+
+// The covered cells, group by group in parallel (any thread count, the same
+// list): node, solid ratio, and, explicitly coupled, the solid velocity; each
+// task notes its first fastest cell.
+void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double toLattice,
+                        bool blendNow, std::vector<lb::CoveredCell>& cells) {
+  const std::ptrdiff_t groups = std::ptrdiff_t(groups_.size()) - 1;
+  const std::size_t total = std::size_t(groups_.back().firstCell);
+  const std::size_t pieces = pieceStart_.back();
+  cells.resize(total), epsSum_.resize(total), cellStart_.resize(total + 1);
+  cellStart_[total] = std::int32_t(pieces);
+  order_.resize(pieces), pieceOwner_.resize(pieces), pieceCell_.resize(pieces);
+  // Each run's pieces get their owner first (shared groups look them up).
+  const std::ptrdiff_t runs = std::ptrdiff_t(runs_.size());
+#pragma omp parallel for schedule(static) num_threads(threads_) if (runs >= 256)
+  for (std::ptrdiff_t r = 0; r < runs; ++r) {
+    const std::int32_t o = runOwner_[r];
+    const std::size_t g0 = pieceStart_[o] + runs_[r].first;
+    std::fill_n(pieceOwner_.begin() + g0, runs_[r].length, o);
+  }
+  const std::ptrdiff_t tasks = std::max<std::ptrdiff_t>(1, std::ptrdiff_t(total) / kChunk);
+  chunkFastest_.assign(tasks, {0.0, -1});
+#pragma omp parallel for schedule(static) num_threads(threads_) if (tasks > 1)
+  for (std::ptrdiff_t t = 0; t < tasks; ++t) {
+    std::pair<double, std::int32_t> best{0.0, -1};
+    for (std::ptrdiff_t q = groups * t / tasks; q < groups * (t + 1) / tasks; ++q) {
+      const Group& grp = groups_[q];
+      std::int32_t cell = grp.firstCell, entry = grp.firstEntry;
+      if (grp.run >= 0) {
+        // A run alone: each piece its own cell.
+        const Run& run = runs_[grp.run];
+        const std::int32_t o = runOwner_[grp.run];
+        const std::vector<CellCover>& from = coverOf(o).cells;
+        const std::int32_t g0 = std::int32_t(pieceStart_[o]) + run.first;
+        for (std::int32_t k = 0; k < run.length; ++k, ++cell, ++entry) {
+          const CellCover& p = from[run.first + k];
+          order_[entry] = g0 + k;
+          pieceCell_[g0 + k] = cell;
+          cellStart_[cell] = entry;
+          epsSum_[cell] = p.eps;
+          cells[cell] = {std::int64_t(run.node) + k, std::min(1.0, p.eps), 0.0, 0.0, p.interior};
+          if (blendNow) {
+            const Vec2 v = ownerVelocity(o, p.arm, circles);
+            const double weight = p.eps / p.eps * toLattice;
+            const Vec2 u(0 + weight * v.x(), 0 + weight * v.y());
+            cells[cell].ux = u.x(), cells[cell].uy = u.y();
+            if (!p.interior && u.squaredNorm() > best.first) best = {u.squaredNorm(), cell};
+          }
+        }
+        continue;
+      }
+      // Shared cells: each node's pieces in piece order.
+      const std::pair<std::uint32_t, std::int32_t>* g = groupPieces_.data() + (-1 - grp.run);
+      for (std::int32_t k = 0; k < grp.pieces;) {
+        const std::uint32_t node = g[k].first;
+        std::int32_t end = k;
+        double sum = 0;
+        for (; end < grp.pieces && g[end].first == node; ++end) {
+          order_[entry + end - k] = g[end].second;
+          pieceCell_[g[end].second] = cell;
+          sum += piece(g[end].second).eps;
+        }
+        const bool interior = end - k == 1 && piece(g[k].second).interior;
+        cellStart_[cell] = entry;
+        epsSum_[cell] = sum;
+        cells[cell] = {std::int64_t(node), std::min(1.0, sum), 0.0, 0.0, interior};
+        if (blendNow) {
+          const Vec2 u = cellVelocity(entry, entry + (end - k), sum, circles, toLattice);
+          cells[cell].ux = u.x(), cells[cell].uy = u.y();
+          if (!interior && u.squaredNorm() > best.first) best = {u.squaredNorm(), cell};
+        }
+        entry += end - k, ++cell, k = end;
       }
     }
-    r = end;
+    chunkFastest_[t] = best;
   }
-  keys_.swap(sortedKeys_);
 }
 
 // The implicit coupling. The momentum a cell gives the fluid is linear in the
@@ -347,28 +391,30 @@ void Coupler::solveVelocities(const lb::Lattice& lattice, const dem::Assembly& a
   const int n = b.size();
   std::vector<Eigen::Matrix3d> K(n, Eigen::Matrix3d::Zero());
   std::vector<Vec3> F0(n, Vec3::Zero());
-  for (const Piece& piece : pieces_) {
-    if (piece.owner < 0) continue;
-    const lb::CoveredCell& cell = cells[piece.cell];
-    const double beta = cell.interior && settings.equilibriumInterior
-                            ? 1.0
-                            : cell.eps * (tau - 0.5) / ((1.0 - cell.eps) + (tau - 0.5));
-    const double share = settings.share == Share::equal ? 1.0 / sharing(piece.cell)
-                                                        : piece.eps / epsSum_[piece.cell];
-    const double alpha = piece.eps / epsSum_[piece.cell];
-    const double r = rho[piece.cell];
-    const Vec2& arm = piece.arm;
-    const Vec3& V = velocity_[piece.owner];
-    // This owner's own part of the explicit cell velocity, and the others'.
-    const Vec2 own = alpha * toLattice * (Vec2(V.x(), V.y()) + spin(V.z(), arm));
-    const Vec2 others = Vec2(given[piece.cell].ux, given[piece.cell].uy) - own;
-    const double g = scale * toLattice * share * beta * r * alpha;
-    Eigen::Matrix3d k;
-    k << 1, 0, -arm.y(), 0, 1, arm.x(), -arm.y(), arm.x(), arm.squaredNorm();
-    K[piece.owner] += g * k;
-    const Vec2 f = scale * share * beta * (j[piece.cell] - r * others);
-    F0[piece.owner] += Vec3(f.x(), f.y(), cross(arm, f));
-  }
+  for (int o = 0; o < n; ++o)  // the elements' pieces (circles move as prescribed)
+    for (std::size_t g = pieceStart_[o]; g < pieceStart_[o + 1]; ++g) {
+      const CellCover& piece = elements_[o].cells[g - pieceStart_[o]];
+      const std::int32_t c = pieceCell_[g];
+      const lb::CoveredCell& cell = cells[c];
+      const double beta = cell.interior && settings.equilibriumInterior
+                              ? 1.0
+                              : cell.eps * (tau - 0.5) / ((1.0 - cell.eps) + (tau - 0.5));
+      const double share =
+          settings.share == Share::equal ? 1.0 / sharing(c) : piece.eps / epsSum_[c];
+      const double alpha = piece.eps / epsSum_[c];
+      const double r = rho[c];
+      const Vec2& arm = piece.arm;
+      const Vec3& V = velocity_[o];
+      // This owner's own part of the explicit cell velocity, and the others'.
+      const Vec2 own = alpha * toLattice * (Vec2(V.x(), V.y()) + spin(V.z(), arm));
+      const Vec2 others = Vec2(given[c].ux, given[c].uy) - own;
+      const double gain = scale * toLattice * share * beta * r * alpha;
+      Eigen::Matrix3d k;
+      k << 1, 0, -arm.y(), 0, 1, arm.x(), -arm.y(), arm.x(), arm.squaredNorm();
+      K[o] += gain * k;
+      const Vec2 f = scale * share * beta * (j[c] - r * others);
+      F0[o] += Vec3(f.x(), f.y(), cross(arm, f));
+    }
   const double c = assembly.integrator == dem::Integrator::euler ? 1.0 : 0.5;
   for (int s = 0; s < n; ++s) {
     if (K[s].isZero()) continue;
@@ -420,11 +466,13 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
   for (int o = 0; o < owners; ++o) {
     Vec2 force = Vec2::Zero();
     double torque = 0, area = 0;
+    const std::vector<CellCover>& from = coverOf(o).cells;
     for (std::size_t k = pieceStart_[o]; k < pieceStart_[o + 1]; ++k) {
-      const Piece& piece = pieces_[k];
-      const double share = settings.share == Share::equal ? 1.0 / sharing(piece.cell)
-                                                          : piece.eps / epsSum_[piece.cell];
-      const Vec2 F = -share * scale * exchange[piece.cell];  // the solid gets the opposite
+      const CellCover& piece = from[k - pieceStart_[o]];
+      const std::int32_t c = pieceCell_[k];
+      const double share =
+          settings.share == Share::equal ? 1.0 / sharing(c) : piece.eps / epsSum_[c];
+      const Vec2 F = -share * scale * exchange[c];  // the solid gets the opposite
       force += F;
       torque += cross(piece.arm, F);
       area += piece.eps;
@@ -459,7 +507,8 @@ void Coupler::clear(dem::Assembly& assembly) {
   circles_.clear();
   open_.clear();
   topology_ = 0;  // a lattice's versions start above 0: the next one is measured afresh
-  pieces_.clear();
+  pieceOwner_.clear();
+  pieceCell_.clear();
   order_.clear();
   cellStart_.clear();
   epsSum_.clear();

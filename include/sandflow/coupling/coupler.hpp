@@ -37,6 +37,9 @@ struct SolidSpeed {
 
 struct CouplingTimes {
   double coverage = 0, forces = 0;  // seconds, accumulated
+  // coverage = measure (the solids' cells and ratios) + sort (pieces in node
+  // order) + cells (the lattice's list with solid velocities) + the rest
+  double measure = 0, sort = 0, cells = 0;
 };
 
 class Coupler {
@@ -60,12 +63,11 @@ class Coupler {
   const CouplingTimes& times() const { return times_; }
 
  private:
-  struct Piece {         // one solid's share of one cell
-    std::int32_t cell;   // index into the lattice's covered cells
-    std::int32_t owner;  // element slot, or -1 - circle index
-    double eps;
-    Vec2 arm;
-    bool interior;  // interior of this solid (see CellCover)
+  // A run: consecutive lattice nodes that one solid covers, cells
+  // [first, first + length) of its coverage (a row of a disc, mostly).
+  struct Run {
+    std::uint32_t node;  // the first node
+    std::int32_t first, length;
   };
   struct Cached {  // the coverage of one solid at the pose it was measured at
     int id = -1;
@@ -73,39 +75,69 @@ class Coupler {
     double angle = 0, area = 0, reach = 0, radius = 0;
     bool outside = false;
     std::vector<CellCover> cells;
+    std::vector<Run> runs;
   };
+  // A piece is one solid's share of one cell: its global index g numbers the
+  // solids' cells solid by solid (elements, then circles), pieceStart_[o] + m
+  // for cell m of owner o.
+  const CellCover& piece(std::int32_t g) const {
+    const std::int32_t o = pieceOwner_[g];
+    return coverOf(o).cells[std::size_t(g) - pieceStart_[o]];
+  }
+  const Cached& coverOf(std::int32_t owner) const {
+    return owner < std::int32_t(elements_.size()) ? elements_[owner]
+                                                  : circles_[owner - elements_.size()];
+  }
   // The solid velocity of the cell whose pieces are order_[first, last) and
   // whose coverages sum to epsSum, lattice units: the coverage-weighted mean of
   // its owners' rigid velocities at the cell centre.
   Vec2 cellVelocity(std::ptrdiff_t first, std::ptrdiff_t last, double epsSum,
                     const std::vector<lb::CircleObstacle>& circles, double toLattice) const;
+  Vec2 ownerVelocity(std::int32_t owner, const Vec2& arm,
+                     const std::vector<lb::CircleObstacle>& circles) const;
   void blendVelocities(const lb::Lattice& lattice, const std::vector<lb::CircleObstacle>& circles,
                        std::vector<lb::CoveredCell>& cells) const;
   void solveVelocities(const lb::Lattice& lattice, const dem::Assembly& assembly,
                        const Settings& settings, const std::vector<lb::CoveredCell>& cells,
                        const Vec2& gravity);
   void radixSort(std::vector<std::uint32_t>& keys, std::vector<std::int32_t>& order);
-  void sortByNode();
+  void groupRuns();
+  void fillCells(const std::vector<lb::CircleObstacle>& circles, double toLattice, bool blendNow,
+                 std::vector<lb::CoveredCell>& cells);
   // How many solids cover covered cell c (its pieces).
   int sharing(std::int32_t c) const { return cellStart_[c + 1] - cellStart_[c]; }
   bool stale(const Cached& c, int id, const Vec2& x, double angle, double area, double reach,
              double radius, bool outside) const;
 
   std::vector<Cached> elements_, circles_;
-  std::vector<std::uint8_t> open_;       // per cell: bulk fluid (Grid::open), per topology
-  std::vector<Piece> pieces_;            // solid by solid, each solid's in its own order
-  std::vector<std::size_t> pieceStart_;  // per solid (elements, then circles): first piece
-  std::vector<std::int32_t> order_;      // pieces in node order
-  std::vector<std::uint32_t> keys_;      // per piece its node; after sortByNode, in node order
-  std::vector<std::int32_t> orderScratch_, bucketStart_;  // the sort's buffers
-  std::vector<std::uint32_t> keysScratch_, sortedKeys_, runKeys_;
-  std::vector<std::int32_t> runFirst_, runOrder_;  // runs of consecutive nodes
-  static constexpr std::ptrdiff_t kChunk = 8192;   // pieces or cells a parallel task takes
-  std::vector<std::int32_t> chunkCells_;           // per chunk of sorted pieces: cells before it
-  std::vector<std::pair<double, std::int32_t>> chunkFastest_;  // per chunk of cells: |u|^2, cell
+  std::vector<std::uint8_t> open_;        // per cell: bulk fluid (Grid::open), per topology
+  std::vector<std::size_t> pieceStart_;   // per owner (elements, then circles): first piece
+  std::vector<std::int32_t> pieceOwner_;  // per piece
+  std::vector<std::int32_t> pieceCell_;   // per piece: its covered cell
+  // Every solid's runs, owner by owner (runOwner_, runKeys_: each one's owner
+  // and first node), and their order by node (runOrder_).
+  std::vector<Run> runs_;
+  std::vector<std::int32_t> runOwner_, runOrder_;
+  std::vector<std::uint32_t> runKeys_;
+  // Runs laid end to end in node order form groups: a run alone, whose cells
+  // are its own, or runs whose nodes overlap (cells several solids share),
+  // whose pieces are sorted one by one into groupPieces_.
+  struct Group {
+    std::int32_t run;         // the run, or -1 - the first of its pieces in groupPieces_
+    std::int32_t pieces;      // how many pieces
+    std::int32_t firstCell;   // its first covered cell, and its first entry in order_
+    std::int32_t firstEntry;  // (the pieces in node order)
+  };
+  std::vector<Group> groups_;
+  std::vector<std::pair<std::uint32_t, std::int32_t>> groupPieces_;  // shared groups': node, piece
+  std::vector<std::int32_t> order_;      // pieces in node order, equal nodes in piece order
   std::vector<std::int32_t> cellStart_;  // per covered cell: its first entry in order_
   std::vector<double> epsSum_;           // per covered cell
   std::vector<Vec3> velocity_;           // per element: (vx, vy, w) the fluid sees
+  std::vector<std::int32_t> orderScratch_, bucketStart_;  // the radix sort's buffers
+  std::vector<std::uint32_t> keysScratch_;
+  static constexpr std::ptrdiff_t kChunk = 8192;               // cells a parallel task takes
+  std::vector<std::pair<double, std::int32_t>> chunkFastest_;  // per task: |u|^2, cell
   // Kept from step to step (a fresh buffer would fault in its pages).
   std::vector<lb::CoveredCell> cellsBuffer_;
   int threads_ = 1;

@@ -29,9 +29,9 @@ class Dess {
   void sortPairs(int n, std::vector<std::pair<int, int>>& pairs);
 
   std::vector<int> order_;
-  std::vector<std::size_t> start_;             // sortPairs: per slot, its first pair
+  std::vector<std::size_t> start_;           // sortPairs: per slot, its first pair
   std::vector<std::pair<int, int>> sorted_;  // sortPairs' output, swapped in
-  std::vector<std::vector<int>> members_;  // per strip, sorted like order_
+  std::vector<std::vector<int>> members_;    // per strip, sorted like order_
   int axis_ = 0;
   long long checks_ = 0;
 };
