@@ -330,8 +330,8 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
           cells[cell] = {std::int64_t(run.node) + k, std::min(1.0, p.eps), 0.0, 0.0, p.interior};
           if (blendNow) {
             const Vec2 v = ownerVelocity(o, p.arm, circles);
-            const double weight = p.eps / p.eps * toLattice;
-            const Vec2 u(0 + weight * v.x(), 0 + weight * v.y());
+            // cellVelocity's sum for one piece: its weight eps / eps is 1 exactly.
+            const Vec2 u(0 + toLattice * v.x(), 0 + toLattice * v.y());
             cells[cell].ux = u.x(), cells[cell].uy = u.y();
             if (!p.interior && u.squaredNorm() > best.first) best = {u.squaredNorm(), cell};
           }
