@@ -95,11 +95,10 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     }
     const dem::Shape& shape = *b.shape[s];
     if (!stale(c, b.id[s], b.x[s], b.angle[s], shape.area(), b.reach[s], 0, false)) continue;
-    std::vector<CellCover> kept = std::move(c.cells);  // keep their capacity
-    std::vector<Run> keptRuns = std::move(c.runs);
-    kept.clear();
-    c = Cached{b.id[s], b.x[s], b.angle[s],      shape.area(),       b.reach[s],
-               0,       false,  std::move(kept), std::move(keptRuns)};
+    // The new pose; the cells and runs vectors keep their capacity.
+    c.id = b.id[s], c.x = b.x[s], c.angle = b.angle[s], c.area = shape.area();
+    c.reach = b.reach[s], c.radius = 0, c.outside = false;
+    c.cells.clear(), c.runs.clear();
     if (const auto f = footprintOf(shape, b.x[s], b.angle[s])) measure(c, *f, b.x[s]);
   }
   for (std::size_t k = 0; k < circles.size(); ++k) {

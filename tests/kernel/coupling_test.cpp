@@ -202,6 +202,37 @@ TEST(Coupling, SharedCellsMergeEveryOwnersCoverage) {
   EXPECT_GT(shared, 300);  // the merge was exercised
 }
 
+// Each covered cell's exchange goes, share by share, to the solids that cover
+// it: over many overlapping moving discs and a container, the solids' fluid
+// forces add up to minus the fluid's momentum change in the covered cells.
+TEST(Coupling, SharedCellsGiveTheirWholeExchangeToTheirOwners) {
+  sim::Manager m;
+  const int n = 64;
+  m.createLattice(test::periodicSquare(1.0, n, 0.01));
+  const int mat = test::softMaterial(m, 3.0);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  const std::uint8_t held = dem::holdX | dem::holdY | dem::holdRotation;
+  const double c = m.lattice().params().latticeSpeed();
+  for (int k = 0; k < 40; ++k)
+    test::addDisc(m, mat, Vec2(u(rng), u(rng)), 0.03 + 0.09 * u(rng),
+                  0.02 * c * Vec2(u(rng) - 0.5, u(rng) - 0.5), 0.1 * (u(rng) - 0.5), held);
+  m.lattice().addCircle({-1, Vec2(0.47, 0.52), 0.45, true, Vec2::Zero(), 0.05});
+  for (int k = 0; k < 3; ++k) m.step();
+
+  const lb::Lattice& l = m.lattice();
+  const double scale = std::pow(l.params().h, 3) / (l.params().dt * l.params().dt);
+  Vec2 fluid = Vec2::Zero(), solids = Vec2::Zero();
+  double size = 0;  // of the terms: the sums' rounding scales with it
+  for (const Vec2& e : l.coveredExchange()) fluid += scale * e, size += scale * e.norm();
+  const dem::Bodies& b = m.assembly().bodies();
+  for (int s = 0; s < b.size(); ++s) solids += b.fluidForce[s];
+  for (const lb::CircleObstacle& o : l.circles()) solids += o.force;
+  ASSERT_GT(fluid.norm(), 0.0);
+  EXPECT_NEAR(solids.x(), -fluid.x(), 1e-12 * size);
+  EXPECT_NEAR(solids.y(), -fluid.y(), 1e-12 * size);
+}
+
 TEST(Coupling, TooFastASolidStopsTheStepBeforeAnythingChanges) {
   sim::Manager m;
   m.createLattice(test::periodicSquare(1.0, 32, 0.01));
