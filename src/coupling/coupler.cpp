@@ -298,14 +298,10 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
   cells.resize(total), epsSum_.resize(total), cellStart_.resize(total + 1);
   cellStart_[total] = std::int32_t(pieces);
   order_.resize(pieces), pieceOwner_.resize(pieces), pieceCell_.resize(pieces);
-  // Each run's pieces get their owner first (shared groups look them up).
-  const std::ptrdiff_t runs = std::ptrdiff_t(runs_.size());
-#pragma omp parallel for schedule(static) num_threads(threads_) if (runs >= 256)
-  for (std::ptrdiff_t r = 0; r < runs; ++r) {
-    const std::int32_t o = runOwner_[r];
-    const std::size_t g0 = pieceStart_[o] + runs_[r].first;
-    std::fill_n(pieceOwner_.begin() + g0, runs_[r].length, o);
-  }
+  // Each piece's owner first (shared groups look them up).
+  const std::int32_t owners = std::int32_t(pieceStart_.size()) - 1;
+  for (std::int32_t o = 0; o < owners; ++o)
+    std::fill(pieceOwner_.begin() + pieceStart_[o], pieceOwner_.begin() + pieceStart_[o + 1], o);
   const std::ptrdiff_t tasks = std::max<std::ptrdiff_t>(1, std::ptrdiff_t(total) / kChunk);
   chunkFastest_.assign(tasks, {0.0, -1});
 #pragma omp parallel for schedule(static) num_threads(threads_) if (tasks > 1)

@@ -334,15 +334,18 @@ void Assembly::updatePairs() {
       next.idA[k] = bodies_.id[e.a], next.idB[k] = bodies_.id[e.b];
       next.discs[k] = e.discs;
       prepareContact(next, k);
-      const bool carried = e.old >= 0;
-      const std::size_t o = carried ? std::size_t(e.old) : 0;
-      h.touching[k] = carried;
-      h.nx[k] = carried ? oldHistory.nx[o] : 0.0, h.ny[k] = carried ? oldHistory.ny[o] : 0.0;
-      h.sx[k] = carried ? oldHistory.sx[o] : 0.0, h.sy[k] = carried ? oldHistory.sy[o] : 0.0;
-      next.fx[k] = carried ? old.fx[o] : 0.0, next.fy[k] = carried ? old.fy[o] : 0.0;
-      next.px[k] = carried ? old.px[o] : 0.0, next.py[k] = carried ? old.py[o] : 0.0;
-      next.overlap[k] = carried ? old.overlap[o] : 0.0;
-      next.ta[k] = 0.0, next.tb[k] = 0.0;
+      h.touching[k] = e.old >= 0;
+      if (e.old >= 0) {
+        const std::size_t o = std::size_t(e.old);
+        h.nx[k] = oldHistory.nx[o], h.ny[k] = oldHistory.ny[o];
+        h.sx[k] = oldHistory.sx[o], h.sy[k] = oldHistory.sy[o];
+        next.fx[k] = old.fx[o], next.fy[k] = old.fy[o];
+        next.px[k] = old.px[o], next.py[k] = old.py[o], next.overlap[k] = old.overlap[o];
+      } else {
+        h.nx[k] = h.ny[k] = h.sx[k] = h.sy[k] = 0.0;
+        next.fx[k] = next.fy[k] = next.px[k] = next.py[k] = next.overlap[k] = 0.0;
+      }
+      next.ta[k] = next.tb[k] = 0.0;
       ++k;
     }
   std::swap(list_, next);

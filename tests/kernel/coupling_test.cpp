@@ -152,19 +152,33 @@ TEST(Coupling, OneAndTwoThreadsGiveIdenticalResults) {
   EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
 }
 
+// 40 overlapping discs, held, in a container on a periodic 64^2 lattice; with
+// `moving`, the discs move and spin at prescribed velocities and the
+// container turns.
+void overlappingDiscsInAContainer(sim::Manager& m, unsigned seed, bool moving) {
+  m.createLattice(test::periodicSquare(1.0, 64, 0.01));
+  const int mat = test::softMaterial(m, 3.0);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  const std::uint8_t held = dem::holdX | dem::holdY | dem::holdRotation;
+  const double c = moving ? m.lattice().params().latticeSpeed() : 0.0;
+  for (int k = 0; k < 40; ++k) {
+    const Vec2 x(u(rng), u(rng));
+    const double r = 0.03 + 0.09 * u(rng);
+    Vec2 v = Vec2::Zero();
+    double w = 0;
+    if (moving) v = 0.02 * c * Vec2(u(rng) - 0.5, u(rng) - 0.5), w = 0.1 * (u(rng) - 0.5);
+    test::addDisc(m, mat, x, r, v, w, held);
+  }
+  m.lattice().addCircle({-1, Vec2(0.47, 0.52), 0.45, true, Vec2::Zero(), moving ? 0.05 : 0.0});
+}
+
 // Many overlapping solids and a container: each covered node is listed once,
 // in node order, with the sum of every owner's own coverage (capped at 1).
 TEST(Coupling, SharedCellsMergeEveryOwnersCoverage) {
   sim::Manager m;
   const int n = 64;
-  m.createLattice(test::periodicSquare(1.0, n, 0.01));
-  const int mat = test::softMaterial(m, 3.0);
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(0, 1);
-  const std::uint8_t held = dem::holdX | dem::holdY | dem::holdRotation;
-  for (int k = 0; k < 40; ++k)
-    test::addDisc(m, mat, Vec2(u(rng), u(rng)), 0.03 + 0.09 * u(rng), Vec2::Zero(), 0, held);
-  m.lattice().addCircle({-1, Vec2(0.47, 0.52), 0.45, true, Vec2::Zero(), 0});
+  overlappingDiscsInAContainer(m, 7, false);
   m.step();
 
   coupling::Grid g;
@@ -207,17 +221,7 @@ TEST(Coupling, SharedCellsMergeEveryOwnersCoverage) {
 // forces add up to minus the fluid's momentum change in the covered cells.
 TEST(Coupling, SharedCellsGiveTheirWholeExchangeToTheirOwners) {
   sim::Manager m;
-  const int n = 64;
-  m.createLattice(test::periodicSquare(1.0, n, 0.01));
-  const int mat = test::softMaterial(m, 3.0);
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(0, 1);
-  const std::uint8_t held = dem::holdX | dem::holdY | dem::holdRotation;
-  const double c = m.lattice().params().latticeSpeed();
-  for (int k = 0; k < 40; ++k)
-    test::addDisc(m, mat, Vec2(u(rng), u(rng)), 0.03 + 0.09 * u(rng),
-                  0.02 * c * Vec2(u(rng) - 0.5, u(rng) - 0.5), 0.1 * (u(rng) - 0.5), held);
-  m.lattice().addCircle({-1, Vec2(0.47, 0.52), 0.45, true, Vec2::Zero(), 0.05});
+  overlappingDiscsInAContainer(m, 11, true);
   for (int k = 0; k < 3; ++k) m.step();
 
   const lb::Lattice& l = m.lattice();
