@@ -22,6 +22,11 @@
 //                     the 1-thread phase is repeated, one line "beside
 //                     start=<unix s> end=<unix s> psps=<x>" each, until FILE
 //                     exists; then the other thread counts, on every CPU
+//   --lammps-data F   after the settle, write the settled bed as a LAMMPS data
+//                     file F (atom_style sphere, with velocities and spins),
+//                     for LAMMPS to time the same bed without its own settle;
+//                     with --beside the settle runs on every CPU and the
+//                     pinning to CPU 0 starts once F is written
 //   --restitution E   not the benchmark: another restitution (default 0.5) or
 //   --friction M      friction coefficient (default 0.5), to see what damps
 //                     the settle's residual motion
@@ -191,12 +196,38 @@ double narrowPass(const Assembly& a, int threads) {
 
 }  // namespace
 
+// The settled bed as a LAMMPS data file (atom_style sphere: id type diameter
+// density x y z, then id vx vy vz wx wy wz), the box and walls of
+// shared/peers/lammps-bed. Written beside and renamed, so that a reader
+// waiting for the file never sees half of it.
+bool writeLammpsData(const Assembly& a, int walls, double W, double H, const std::string& path) {
+  const Bodies& b = a.bodies();
+  const int n = int(b.x.size()) - walls;
+  const std::string part = path + ".part";
+  FILE* f = std::fopen(part.c_str(), "w");
+  if (!f) return false;
+  std::fprintf(f,
+               "sandflow settled bed %d\n\n%d atoms\n1 atom types\n\n0 %.17g xlo xhi\n0 %.17g ylo "
+               "yhi\n-0.001 0.001 zlo zhi\n\nAtoms # sphere\n\n",
+               n, n, W, H);
+  for (int i = 0; i < n; ++i)
+    std::fprintf(f, "%d 1 %.17g 2650 %.17g %.17g 0\n", i + 1, 2 * static_cast<const Disc&>(*b.shape[walls + i]).radius(),
+                 b.x[walls + i].x(), b.x[walls + i].y());
+  std::fprintf(f, "\nVelocities\n\n");
+  for (int i = 0; i < n; ++i)
+    std::fprintf(f, "%d %.17g %.17g 0 0 0 %.17g\n", i + 1, b.v[walls + i].x(), b.v[walls + i].y(),
+                 b.w[walls + i]);
+  const bool ok = std::fclose(f) == 0;
+  return ok && std::rename(part.c_str(), path.c_str()) == 0;
+}
+
 int main(int argc, char** argv) {
   std::vector<std::string> pos;
   int reps = 1, trace = 0, fine = 0;
   long fineFrom = 0;
   bool diag = false;
-  std::string beside;  // --beside FILE
+  std::string beside;      // --beside FILE
+  std::string lammpsData;  // --lammps-data FILE
   double restitution = 0.5, friction = 0.5;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--reps") && i + 1 < argc)
@@ -211,6 +242,8 @@ int main(int argc, char** argv) {
       friction = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--beside") && i + 1 < argc)
       beside = argv[++i];
+    else if (!std::strcmp(argv[i], "--lammps-data") && i + 1 < argc)
+      lammpsData = argv[++i];
     else if (!std::strcmp(argv[i], "--diagnose"))
       diag = true;
     else
@@ -231,15 +264,19 @@ int main(int argc, char** argv) {
   // Beside another code: this one keeps to CPU 0 until that one is done.
   cpu_set_t everyCpu;
   sched_getaffinity(0, sizeof everyCpu, &everyCpu);
-  if (!beside.empty()) {
-    if (std::find(threadList.begin(), threadList.end(), 1) == threadList.end())
-      threadList.push_back(1);
-    std::sort(threadList.begin(), threadList.end());
+  auto pinToFirstCpu = [&] {
     cpu_set_t first;
     CPU_ZERO(&first);
     CPU_SET(0, &first);
     if (sched_setaffinity(0, sizeof first, &first) != 0) std::perror("sched_setaffinity");
-    a.threads = 1;
+  };
+  if (!beside.empty()) {
+    if (std::find(threadList.begin(), threadList.end(), 1) == threadList.end())
+      threadList.push_back(1);
+    std::sort(threadList.begin(), threadList.end());
+    // The code beside starts from this one's settled bed: until it is
+    // written, this one has the machine to itself.
+    if (lammpsData.empty()) pinToFirstCpu(), a.threads = 1;
   }
   // The fall's impacts press discs deep at this stiffness: up to 0.57 of the
   // smaller radius at N = 100,000, past sandflow's default safety limit of 0.5
@@ -308,6 +345,13 @@ int main(int argc, char** argv) {
   }
   const double settleSeconds = since(s0);
   if (diag) diagnose(a, walls);
+  if (!lammpsData.empty()) {
+    if (!writeLammpsData(a, walls, W, H, lammpsData)) {
+      std::fprintf(stderr, "cannot write %s\n", lammpsData.c_str());
+      return 1;
+    }
+    if (!beside.empty()) pinToFirstCpu();
+  }
 
   bool first = true;
   double contactsFirst = 0, discContactsFirst = 0, kineticFirst = 0, translationalFirst = 0;
