@@ -25,8 +25,10 @@
 //   --lammps-data F   after the settle, write the settled bed as a LAMMPS data
 //                     file F (atom_style sphere, with velocities and spins),
 //                     for LAMMPS to time the same bed without its own settle;
-//                     with --beside the settle runs on every CPU and the
-//                     pinning to CPU 0 starts once F is written
+//                     with --beside the settle runs on every CPU, the pinning
+//                     to CPU 0 starts once F is written, and the stamped
+//                     1-thread phases come before the repetitions (the other
+//                     code's run is short)
 //   --restitution E   not the benchmark: another restitution (default 0.5) or
 //   --friction M      friction coefficient (default 0.5), to see what damps
 //                     the settle's residual motion
@@ -355,8 +357,47 @@ int main(int argc, char** argv) {
 
   bool first = true;
   double contactsFirst = 0, discContactsFirst = 0, kineticFirst = 0, translationalFirst = 0;
+  // One timed phase: its wall seconds (steps only); contacts are counted
+  // between the steps, untimed, and those of the first phase are kept: each
+  // contact once, walls included, and disc-disc contacts alone (what
+  // LAMMPS's contact/atom counts).
+  auto phase = [&]() {
+    double contacts = 0, discContacts = 0, seconds = 0;
+    for (long s = 0; s < timed; ++s) {
+      const auto t0 = Clock::now();
+      a.step(dt, g);
+      seconds += since(t0);
+      if (first)
+        for (const Contact& c : a.contacts())
+          if (c.touching) contacts += 1, discContacts += c.a >= walls;
+    }
+    if (first) {
+      contactsFirst = contacts / timed / n, discContactsFirst = discContacts / timed / n;
+      const Energy e = energy(a);
+      kineticFirst = e.translational + e.rotational, translationalFirst = e.translational;
+    }
+    first = false;
+    return seconds;
+  };
+  // The same phase again and again, each stamped with the wall clock, until
+  // the code beside is done; then every CPU for the next thread count.
+  auto besidePhases = [&]() {
+    struct stat st;
+    while (stat(beside.c_str(), &st) != 0) {
+      const double start = unixSeconds();
+      const double seconds = phase();
+      std::printf("beside start=%.3f end=%.3f psps=%.4g\n", start, unixSeconds(),
+                  n * double(timed) / seconds);
+      std::fflush(stdout);
+    }
+    sched_setaffinity(0, sizeof everyCpu, &everyCpu);
+  };
   for (int threads : timed > 0 ? threadList : std::vector<int>{}) {
     a.threads = threads;
+    // From this code's settled bed the other code times only its 2,000 steps,
+    // over by the end of this one's repetitions: the stamped phases first.
+    const bool besideHere = !beside.empty() && threads == 1;
+    if (besideHere && !lammpsData.empty()) besidePhases();
     double best = 1e300, worst = 0, bestSort = 0, bestNarrow = 0, bestIntegrate = 0, bestPass = 0,
            bestSums = 0;
     double bestOther = 0, otherTotal = 0, timedTotal = 0;
@@ -364,26 +405,11 @@ int main(int argc, char** argv) {
     for (int r = 0; r < reps; ++r) {
       const StepTimes before = a.times();
       const long long builds0 = a.broadPhaseBuilds();
-      double contacts = 0, discContacts = 0, seconds = 0;
       const double busy0 = machineBusy(), own0 = ownCpu();
-      for (long s = 0; s < timed; ++s) {
-        const auto t0 = Clock::now();
-        a.step(dt, g);
-        seconds += since(t0);
-        // Counted outside the timing: each contact once, walls included; and
-        // disc-disc contacts alone (what LAMMPS's contact/atom counts).
-        for (const Contact& c : a.contacts())
-          if (c.touching) contacts += 1, discContacts += c.a >= walls;
-      }
+      const double seconds = phase();
       const double other = std::max(0.0, (machineBusy() - busy0) - (ownCpu() - own0));
       otherTotal += other, timedTotal += seconds;
       const StepTimes& after = a.times();
-      if (first) {
-        contactsFirst = contacts / timed / n, discContactsFirst = discContacts / timed / n;
-        const Energy e = energy(a);
-        kineticFirst = e.translational + e.rotational, translationalFirst = e.translational;
-      }
-      first = false;
       worst = std::max(worst, seconds);
       if (seconds < best) {
         best = seconds, bestOther = other;
@@ -395,24 +421,7 @@ int main(int argc, char** argv) {
         builds = long(a.broadPhaseBuilds() - builds0);
       }
     }
-    // The same phase again and again, each stamped with the wall clock, until
-    // the code beside is done; then every CPU for the next thread count.
-    if (!beside.empty() && threads == 1) {
-      struct stat st;
-      while (stat(beside.c_str(), &st) != 0) {
-        const double start = unixSeconds();
-        double seconds = 0;
-        for (long s = 0; s < timed; ++s) {
-          const auto t0 = Clock::now();
-          a.step(dt, g);
-          seconds += since(t0);
-        }
-        std::printf("beside start=%.3f end=%.3f psps=%.4g\n", start, unixSeconds(),
-                    n * double(timed) / seconds);
-        std::fflush(stdout);
-      }
-      sched_setaffinity(0, sizeof everyCpu, &everyCpu);
-    }
+    if (besideHere && lammpsData.empty()) besidePhases();
     double narrowOnly = 1e300;
     for (int r = 0; r < 50; ++r) narrowOnly = std::min(narrowOnly, narrowPass(a, threads));
     narrowOnly = std::min(narrowOnly, bestNarrow);

@@ -3,7 +3,7 @@
 # file from `sandflow_dem_bed --lammps-data`) instead of settling 100,000
 # steps itself. Usage: lammps_bed_timed.sh DATA [NP]
 # Prints the fields of shared/peers/lammps-bed/run.sh: "lammps_psps=<x>
-# contacts_per_disc=<x> timed_s=<x>", plus start=warm.
+# contacts_per_disc=<x> timed_s=<x>", plus from=warm.
 set -eu
 data=$(realpath "$1"); np=${2:-1}
 here=$(cd "$(dirname "$0")" && pwd); work=$(mktemp -d); trap 'rm -rf "$work"' EXIT; cd "$work"
@@ -15,4 +15,4 @@ run=(lmp); [[ $np -gt 1 ]] && run=(mpirun --allow-run-as-root -np "$np" lmp)
   -log none -screen out.log >/dev/null
 t=$(grep "Loop time" out.log | tail -n 1 | awk '{print $4}')
 c=$(grep -E "^ +2000 " out.log | tail -n 1 | awk '{print $4}')
-python3 -c "print(f'lammps_psps={$n*2000/$t:.4g} contacts_per_disc={$c/2/$n:.3f} timed_s={$t} start=warm')"
+python3 -c "print(f'lammps_psps={$n*2000/$t:.4g} contacts_per_disc={$c/2/$n:.3f} timed_s={$t} from=warm')"
