@@ -213,8 +213,9 @@ bool writeLammpsData(const Assembly& a, int walls, double W, double H, const std
                "yhi\n-0.001 0.001 zlo zhi\n\nAtoms # sphere\n\n",
                n, n, W, H);
   for (int i = 0; i < n; ++i)
-    std::fprintf(f, "%d 1 %.17g 2650 %.17g %.17g 0\n", i + 1, 2 * static_cast<const Disc&>(*b.shape[walls + i]).radius(),
-                 b.x[walls + i].x(), b.x[walls + i].y());
+    std::fprintf(f, "%d 1 %.17g 2650 %.17g %.17g 0\n", i + 1,
+                 2 * static_cast<const Disc&>(*b.shape[walls + i]).radius(), b.x[walls + i].x(),
+                 b.x[walls + i].y());
   std::fprintf(f, "\nVelocities\n\n");
   for (int i = 0; i < n; ++i)
     std::fprintf(f, "%d %.17g %.17g 0 0 0 %.17g\n", i + 1, b.v[walls + i].x(), b.v[walls + i].y(),
