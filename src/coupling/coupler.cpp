@@ -316,6 +316,10 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
         const std::int32_t o = runOwner_[grp.run];
         const std::vector<CellCover>& from = coverOf(o).cells;
         const std::int32_t g0 = std::int32_t(pieceStart_[o]) + run.first;
+        // The owner's rigid motion once for the run (ownerVelocity, hoisted).
+        const std::int32_t n = std::int32_t(elements_.size());
+        const Vec2 v0 = o < n ? Vec2(velocity_[o].x(), velocity_[o].y()) : circles[o - n].velocity;
+        const double w0 = o < n ? velocity_[o].z() : circles[o - n].spin;
         for (std::int32_t k = 0; k < run.length; ++k, ++cell, ++entry) {
           const CellCover& p = from[run.first + k];
           order_[entry] = g0 + k;
@@ -324,7 +328,7 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
           epsSum_[cell] = p.eps;
           cells[cell] = {std::int64_t(run.node) + k, std::min(1.0, p.eps), 0.0, 0.0, p.interior};
           if (blendNow) {
-            const Vec2 v = ownerVelocity(o, p.arm, circles);
+            const Vec2 v = v0 + spin(w0, p.arm);
             // cellVelocity's sum for one piece: its weight eps / eps is 1 exactly.
             const Vec2 u(0 + toLattice * v.x(), 0 + toLattice * v.y());
             cells[cell].ux = u.x(), cells[cell].uy = u.y();
