@@ -12,7 +12,7 @@
 // it). Each time is the best of R repetitions. The bare kernels and the
 // Manager step the same lattice or elements in quartets (bare, Manager,
 // Manager, bare), and the overhead is the median of the quartets' ratios
-// (3R + 1 quartets of short phases for the fluid, 21 for the elements), so
+// (6R + 1 quartets of short phases for the fluid, 21 for the elements), so
 // that a noisy neighbour, a drifting machine or state, or where the pages
 // fall disturbs both alike.
 // Lattice units (h = dt = 1).
@@ -242,7 +242,7 @@ int main(int argc, char** argv) {
           managerInside += m.times().fluid + m.times().elements - inside;
           return perStep;
         },
-        3 * reps + 1);
+        6 * reps + 1);
     bare = o.bare, managed = o.managed, fluidOverhead = o.percent;
   }
   const double fluidOwn = (managerWall - managerInside) / managerWall * 100;
