@@ -170,16 +170,22 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   times_.coverage += since(t0);
 }
 
-// The rigid velocity of an owner at arm from its reference point.
-[[gnu::always_inline]] inline Vec2 Coupler::ownerVelocity(
-    std::int32_t owner, const Vec2& arm, const std::vector<lb::CircleObstacle>& circles) const {
+[[gnu::always_inline]] inline Coupler::Motion Coupler::ownerMotion(
+    std::int32_t owner, const std::vector<lb::CircleObstacle>& circles) const {
   const std::int32_t n = std::int32_t(elements_.size());
   if (owner < n) {
     const Vec3& v = velocity_[owner];
-    return Vec2(v.x(), v.y()) + spin(v.z(), arm);
+    return {Vec2(v.x(), v.y()), v.z()};
   }
   const lb::CircleObstacle& o = circles[owner - n];
-  return o.velocity + spin(o.spin, arm);
+  return {o.velocity, o.spin};
+}
+
+// The rigid velocity of an owner at arm from its reference point.
+[[gnu::always_inline]] inline Vec2 Coupler::ownerVelocity(
+    std::int32_t owner, const Vec2& arm, const std::vector<lb::CircleObstacle>& circles) const {
+  const Motion m = ownerMotion(owner, circles);
+  return m.v + spin(m.w, arm);
 }
 
 // Each cell's solid velocity: the coverage-weighted mean of its owners' rigid
@@ -316,10 +322,7 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
         const std::int32_t o = runOwner_[grp.run];
         const std::vector<CellCover>& from = coverOf(o).cells;
         const std::int32_t g0 = std::int32_t(pieceStart_[o]) + run.first;
-        // The owner's rigid motion once for the run (ownerVelocity, hoisted).
-        const std::int32_t n = std::int32_t(elements_.size());
-        const Vec2 v0 = o < n ? Vec2(velocity_[o].x(), velocity_[o].y()) : circles[o - n].velocity;
-        const double w0 = o < n ? velocity_[o].z() : circles[o - n].spin;
+        const Motion motion = ownerMotion(o, circles);  // once for the run
         for (std::int32_t k = 0; k < run.length; ++k, ++cell, ++entry) {
           const CellCover& p = from[run.first + k];
           order_[entry] = g0 + k;
@@ -328,7 +331,7 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
           epsSum_[cell] = p.eps;
           cells[cell] = {std::int64_t(run.node) + k, std::min(1.0, p.eps), 0.0, 0.0, p.interior};
           if (blendNow) {
-            const Vec2 v = v0 + spin(w0, p.arm);
+            const Vec2 v = motion.v + spin(motion.w, p.arm);
             // cellVelocity's sum for one piece: its weight eps / eps is 1 exactly.
             const Vec2 u(0 + toLattice * v.x(), 0 + toLattice * v.y());
             cells[cell].ux = u.x(), cells[cell].uy = u.y();

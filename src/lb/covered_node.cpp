@@ -16,6 +16,12 @@ using d2q9::Q;
 
 constexpr std::ptrdiff_t kBlock = 256;
 
+// The body forcing's term S_i = 3 w_i e_i.F of every direction.
+void forcingSource(const CollisionParams& p, double (&source)[Q]) {
+  for (int i = 0; i < Q; ++i)
+    source[i] = 3.0 * d2q9::w[i] * (d2q9::ex[i] * p.fx + d2q9::ey[i] * p.fy);
+}
+
 template <Collision C, ForceScheme S>
 SF_KERNEL_CLONES StepStats runBlock(const StepContext& ctx, const CoveredNode& node,
                                     std::ptrdiff_t first, std::ptrdiff_t last) {
@@ -23,7 +29,7 @@ SF_KERNEL_CLONES StepStats runBlock(const StepContext& ctx, const CoveredNode& n
   const CollisionParams& p = ctx.params;
   const double tau = 1.0 / p.omegaPlus;
   double source[Q];
-  for (int i = 0; i < Q; ++i) source[i] = 3.0 * w[i] * (ex[i] * p.fx + ey[i] * p.fy);
+  forcingSource(p, source);
   StepStats stats;
   for (std::ptrdiff_t k = first; k < last; ++k) {
     const CoveredCell& cell = node.cells[k];
@@ -80,6 +86,7 @@ SF_KERNEL_CLONES StepStats runBlock(const StepContext& ctx, const CoveredNode& n
 // contraction), so the populations and the mass sum do not change.
 constexpr int kLanes = 8;
 
+// equilibria() of collision.hpp, operation for operation, for eight lanes.
 SF_ALWAYS_INLINE void laneEquilibria(const double* rho, const double* ux, const double* uy,
                                      double (&feq)[d2q9::Q][kLanes]) {
   alignas(64) double even[kLanes];
@@ -104,11 +111,9 @@ SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const Covere
   const CollisionParams& p = ctx.params;
   const double tau = 1.0 / p.omegaPlus;
   double source[Q];
+  forcingSource(p, source);
   std::ptrdiff_t pull[Q];
-  for (int i = 0; i < Q; ++i) {
-    source[i] = 3.0 * w[i] * (ex[i] * p.fx + ey[i] * p.fy);
-    pull[i] = i * ctx.stride - (ex[i] + ey[i] * ctx.rowStride);
-  }
+  for (int i = 0; i < Q; ++i) pull[i] = i * ctx.stride - (ex[i] + ey[i] * ctx.rowStride);
   StepStats stats;
   for (std::ptrdiff_t k0 = first; k0 < last; k0 += kLanes) {
     // A short last batch repeats its last cell in the spare lanes (same
@@ -142,34 +147,33 @@ SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const Covere
       // Eight interior cells (a solid's inside, mostly): no fluid equilibrium.
       for (int i = 0; i < Q; ++i)
 #pragma omp simd
-        for (int l = 0; l < kLanes; ++l) ctx.dst[i * ctx.stride + at[l]] = solid[i][l] + source[i];
-      for (int l = 0; l < used; ++l) {
-        node.exchange[k0 + l] = Vec2(rho[l] * sx[l] - jx[l], rho[l] * sy[l] - jy[l]);
-        stats.merge({rho[l], (jx[l] * jx[l] + jy[l] * jy[l]) / (rho[l] * rho[l])});
+        for (int l = 0; l < kLanes; ++l) out[i][l] = solid[i][l] + source[i];
+#pragma omp simd
+      for (int l = 0; l < kLanes; ++l) u2[l] = (jx[l] * jx[l] + jy[l] * jy[l]) / (rho[l] * rho[l]);
+    } else {
+#pragma omp simd
+      for (int l = 0; l < kLanes; ++l) ux[l] = jx[l] / rho[l], uy[l] = jy[l] / rho[l];
+      laneEquilibria(rho, ux, uy, fluid);
+      for (int i = 0; i < Q; ++i) {
+        const int o = opposite[i];
+#pragma omp simd
+        for (int l = 0; l < kLanes; ++l) {
+          // Fully covered (B = 1): f + Omega^s + S; partial: BGK's relaxation
+          // towards the fluid's equilibrium blended with Omega^s (runBlock).
+          const double omega = f[o][l] - f[i][l] + solid[i][l] - fluid[o][l];
+          const double relax = (1.0 - b[l]) * p.omegaPlus;
+          const double partial =
+              f[i][l] - relax * (f[i][l] - fluid[i][l]) + b[l] * omega + source[i];
+          const double covered = f[o][l] + (solid[i][l] - fluid[o][l]) + source[i];
+          const double mixed = b[l] == 1.0 ? covered : partial;
+          out[i][l] = inner[l] != 0 ? solid[i][l] + source[i] : mixed;
+        }
       }
-      continue;
+#pragma omp simd
+      for (int l = 0; l < kLanes; ++l)
+        u2[l] = inner[l] != 0 ? (jx[l] * jx[l] + jy[l] * jy[l]) / (rho[l] * rho[l])
+                              : ux[l] * ux[l] + uy[l] * uy[l];
     }
-#pragma omp simd
-    for (int l = 0; l < kLanes; ++l) ux[l] = jx[l] / rho[l], uy[l] = jy[l] / rho[l];
-    laneEquilibria(rho, ux, uy, fluid);
-    for (int i = 0; i < Q; ++i) {
-      const int o = opposite[i];
-#pragma omp simd
-      for (int l = 0; l < kLanes; ++l) {
-        // Fully covered (B = 1): f + Omega^s + S; partial: BGK's relaxation
-        // towards the fluid's equilibrium blended with Omega^s (runBlock).
-        const double omega = f[o][l] - f[i][l] + solid[i][l] - fluid[o][l];
-        const double relax = (1.0 - b[l]) * p.omegaPlus;
-        const double partial = f[i][l] - relax * (f[i][l] - fluid[i][l]) + b[l] * omega + source[i];
-        const double covered = f[o][l] + (solid[i][l] - fluid[o][l]) + source[i];
-        const double mixed = b[l] == 1.0 ? covered : partial;
-        out[i][l] = inner[l] != 0 ? solid[i][l] + source[i] : mixed;
-      }
-    }
-#pragma omp simd
-    for (int l = 0; l < kLanes; ++l)
-      u2[l] = inner[l] != 0 ? (jx[l] * jx[l] + jy[l] * jy[l]) / (rho[l] * rho[l])
-                            : ux[l] * ux[l] + uy[l] * uy[l];
     for (int i = 0; i < Q; ++i)
 #pragma omp simd
       for (int l = 0; l < kLanes; ++l) ctx.dst[i * ctx.stride + at[l]] = out[i][l];

@@ -93,6 +93,12 @@ class Coupler {
   // its owners' rigid velocities at the cell centre.
   Vec2 cellVelocity(std::ptrdiff_t first, std::ptrdiff_t last, double epsSum,
                     const std::vector<lb::CircleObstacle>& circles, double toLattice) const;
+  // An owner's rigid motion: velocity of its reference point and spin.
+  struct Motion {
+    Vec2 v;
+    double w;
+  };
+  Motion ownerMotion(std::int32_t owner, const std::vector<lb::CircleObstacle>& circles) const;
   Vec2 ownerVelocity(std::int32_t owner, const Vec2& arm,
                      const std::vector<lb::CircleObstacle>& circles) const;
   void blendVelocities(const lb::Lattice& lattice, const std::vector<lb::CircleObstacle>& circles,
