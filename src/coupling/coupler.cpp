@@ -116,9 +116,11 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   const int owners = n + int(circles.size());
   pieceStart_.assign(owners + 1, 0);
   runs_.clear(), runOwner_.clear();
+  runStart_.assign(owners + 1, 0);
   for (int o = 0; o < owners; ++o) {
     const Cached& c = coverOf(o);
     pieceStart_[o + 1] = pieceStart_[o] + c.cells.size();
+    runStart_[o + 1] = runStart_[o] + std::int32_t(c.runs.size());
     runs_.insert(runs_.end(), c.runs.begin(), c.runs.end());
     runOwner_.insert(runOwner_.end(), c.runs.size(), o);
   }
@@ -139,14 +141,15 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     blendVelocities(lattice, circles, cells);
     // The first fastest cell of each chunk of cells.
     const std::ptrdiff_t cellChunks = (std::ptrdiff_t(total) + kChunk - 1) / kChunk;
-    chunkFastest_.assign(cellChunks, {0.0, -1});
+    chunkFastest_.assign(cellChunks, Fastest{});
 #pragma omp parallel for schedule(static) num_threads(threads) if (cellChunks > 1)
     for (std::ptrdiff_t c = 0; c < cellChunks; ++c) {
-      std::pair<double, std::int32_t> best{0.0, -1};
+      Fastest best;
       for (std::ptrdiff_t k = c * kChunk; k < std::min(std::ptrdiff_t(total), (c + 1) * kChunk);
            ++k) {
         const double u2 = cells[k].ux * cells[k].ux + cells[k].uy * cells[k].uy;
-        if (!cells[k].interior && u2 > best.first) best = {u2, std::int32_t(k)};
+        if (!cells[k].interior && u2 > best.u2)
+          best = {u2, std::int32_t(k), pieceOwner_[order_[cellStart_[k]]]};
       }
       chunkFastest_[c] = best;
     }
@@ -155,10 +158,10 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   // of the chunks' fastest, the first.
   fastest_ = SolidSpeed{};
   double fastest2 = 0;
-  for (const auto& [u2, c] : chunkFastest_) {
-    if (!(u2 > fastest2)) continue;
-    fastest2 = u2;
-    const int owner = pieceOwner_[order_[cellStart_[c]]];
+  for (const Fastest& f : chunkFastest_) {
+    if (!(f.u2 > fastest2)) continue;
+    fastest2 = f.u2;
+    const int owner = f.owner;
     fastest_.element = owner < n ? b.id[owner] : -1;
     fastest_.obstacle = owner >= n ? circles[owner - n].id : -1;
   }
@@ -260,6 +263,7 @@ void Coupler::groupRuns() {
   for (std::size_t r = 0; r < runs; ++r) runKeys_[r] = runs_[r].node;
   radixSort(runKeys_, runOrder_);  // stable: equal first nodes in owner order
   groups_.clear(), groupPieces_.clear();
+  runCell_.assign(runs, -1);
   std::int32_t cellCount = 0, entries = 0;
   auto lastNode = [&](std::int32_t run) { return runs_[run].node + runs_[run].length - 1; };
   for (std::size_t q = 0; q < runs;) {
@@ -270,6 +274,7 @@ void Coupler::groupRuns() {
     const Run& first = runs_[runOrder_[q]];
     if (end == q + 1) {
       groups_.push_back({runOrder_[q], first.length, cellCount, entries});
+      runCell_[runOrder_[q]] = cellCount;
       cellCount += first.length, entries += first.length;
     } else {
       // The pieces of the overlapping runs, by node, equal nodes by piece.
@@ -309,10 +314,11 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
   for (std::int32_t o = 0; o < owners; ++o)
     std::fill(pieceOwner_.begin() + pieceStart_[o], pieceOwner_.begin() + pieceStart_[o + 1], o);
   const std::ptrdiff_t tasks = std::max<std::ptrdiff_t>(1, std::ptrdiff_t(total) / kChunk);
-  chunkFastest_.assign(tasks, {0.0, -1});
+  chunkFastest_.assign(tasks, Fastest{});
+  const bool indexAll = !blendNow;  // the implicit coupling reads every piece's index
 #pragma omp parallel for schedule(static) num_threads(threads_) if (tasks > 1)
   for (std::ptrdiff_t t = 0; t < tasks; ++t) {
-    std::pair<double, std::int32_t> best{0.0, -1};
+    Fastest best;
     for (std::ptrdiff_t q = groups * t / tasks; q < groups * (t + 1) / tasks; ++q) {
       const Group& grp = groups_[q];
       std::int32_t cell = grp.firstCell, entry = grp.firstEntry;
@@ -325,17 +331,16 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
         const Motion motion = ownerMotion(o, circles);  // once for the run
         for (std::int32_t k = 0; k < run.length; ++k, ++cell, ++entry) {
           const CellCover& p = from[run.first + k];
-          order_[entry] = g0 + k;
-          pieceCell_[g0 + k] = cell;
           cellStart_[cell] = entry;
-          epsSum_[cell] = p.eps;
-          cells[cell] = {std::int64_t(run.node) + k, std::min(1.0, p.eps), 0.0, 0.0, p.interior};
+          if (indexAll) order_[entry] = g0 + k, pieceCell_[g0 + k] = cell, epsSum_[cell] = p.eps;
+          cells[cell] = {std::int32_t(run.node + k), bool(p.interior), std::min(1.0, p.eps), 0.0,
+                         0.0};
           if (blendNow) {
             const Vec2 v = motion.v + spin(motion.w, p.arm);
             // cellVelocity's sum for one piece: its weight eps / eps is 1 exactly.
             const Vec2 u(0 + toLattice * v.x(), 0 + toLattice * v.y());
             cells[cell].ux = u.x(), cells[cell].uy = u.y();
-            if (!p.interior && u.squaredNorm() > best.first) best = {u.squaredNorm(), cell};
+            if (!p.interior && u.squaredNorm() > best.u2) best = {u.squaredNorm(), cell, o};
           }
         }
         continue;
@@ -354,11 +359,12 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
         const bool interior = end - k == 1 && piece(g[k].second).interior;
         cellStart_[cell] = entry;
         epsSum_[cell] = sum;
-        cells[cell] = {std::int64_t(node), std::min(1.0, sum), 0.0, 0.0, interior};
+        cells[cell] = {std::int32_t(node), interior, std::min(1.0, sum), 0.0, 0.0};
         if (blendNow) {
           const Vec2 u = cellVelocity(entry, entry + (end - k), sum, circles, toLattice);
           cells[cell].ux = u.x(), cells[cell].uy = u.y();
-          if (!interior && u.squaredNorm() > best.first) best = {u.squaredNorm(), cell};
+          if (!interior && u.squaredNorm() > best.u2)
+            best = {u.squaredNorm(), cell, pieceOwner_[g[k].second]};
         }
         entry += end - k, ++cell, k = end;
       }
@@ -469,15 +475,24 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
     Vec2 force = Vec2::Zero();
     double torque = 0, area = 0;
     const std::vector<CellCover>& from = coverOf(o).cells;
-    for (std::size_t k = pieceStart_[o]; k < pieceStart_[o + 1]; ++k) {
-      const CellCover& piece = from[k - pieceStart_[o]];
-      const std::int32_t c = pieceCell_[k];
-      const double share =
-          settings.share == Share::equal ? 1.0 / sharing(c) : piece.eps / epsSum_[c];
-      const Vec2 F = -share * scale * exchange[c];  // the solid gets the opposite
-      force += F;
-      torque += cross(piece.arm, F);
-      area += piece.eps;
+    // Run by run, piece by piece: a lone run's pieces have its cells to
+    // themselves (share 1), a shared run's look theirs up.
+    for (std::int32_t r = runStart_[o]; r < runStart_[o + 1]; ++r) {
+      const Run& run = runs_[r];
+      const std::int32_t lone = runCell_[r];
+      for (std::int32_t k = 0; k < run.length; ++k) {
+        const CellCover& piece = from[run.first + k];
+        double share = 1.0;
+        std::int32_t c = lone + k;
+        if (lone < 0) {
+          c = pieceCell_[pieceStart_[o] + run.first + k];
+          share = settings.share == Share::equal ? 1.0 / sharing(c) : piece.eps / epsSum_[c];
+        }
+        const Vec2 F = -share * scale * exchange[c];  // the solid gets the opposite
+        force += F;
+        torque += cross(piece.arm, F);
+        area += piece.eps;
+      }
     }
     if (o < n) {
       b.fluidForce[o] = force, b.fluidTorque[o] = torque, submerged[o] = area;
@@ -511,6 +526,8 @@ void Coupler::clear(dem::Assembly& assembly) {
   topology_ = 0;  // a lattice's versions start above 0: the next one is measured afresh
   pieceOwner_.clear();
   pieceCell_.clear();
+  runStart_.clear();
+  runCell_.clear();
   order_.clear();
   cellStart_.clear();
   epsSum_.clear();

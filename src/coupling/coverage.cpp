@@ -112,7 +112,7 @@ bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int s
       if (e <= 0) continue;
       const int wi = wrap(i, g.nx, g.periodicX);
       if (wi < 0 || (g.open && !g.open[std::size_t(j) * g.nx + wi])) continue;
-      out.push_back({wi, j, e, arm(i, b), inner && i >= innerLo && i <= innerHi});
+      out.push_back({arm(i, b), e, wi, j, inner && i >= innerLo && i <= innerHi});
     }
   }
   return true;
@@ -183,7 +183,7 @@ void cover(const Footprint& f, const Vec2& reference, const Grid& g, int subcell
       bool interior = e >= 1;
       for (int db = -1; db <= 1 && interior; ++db)
         for (int da = -1; da <= 1 && interior; ++da) interior = at(a + da, b + db) >= 1;
-      out.push_back({i, j, e, offset(a, b), interior});
+      out.push_back({offset(a, b), e, i, j, interior});
     }
 }
 

@@ -131,9 +131,20 @@ SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const Covere
       inner[l] = c.interior && node.equilibriumInterior ? 1.0 : 0.0;
       b[l] = c.eps * (tau - 0.5) / ((1.0 - c.eps) + (tau - 0.5));
     }
-    for (int i = 0; i < Q; ++i)
+    // Eight consecutive nodes (a row of a solid, mostly) load and store as
+    // vectors; any others gather and scatter, which cost several times more.
+    const bool consecutive = used == kLanes && at[kLanes - 1] - at[0] == kLanes - 1;
+    if (consecutive) {
+      for (int i = 0; i < Q; ++i) {
+        const double* from = ctx.src + at[0] + pull[i];
 #pragma omp simd
-      for (int l = 0; l < kLanes; ++l) f[i][l] = ctx.src[at[l] + pull[i]];
+        for (int l = 0; l < kLanes; ++l) f[i][l] = from[l];
+      }
+    } else {
+      for (int i = 0; i < Q; ++i)
+#pragma omp simd
+        for (int l = 0; l < kLanes; ++l) f[i][l] = ctx.src[at[l] + pull[i]];
+    }
 #pragma omp simd
     for (int l = 0; l < kLanes; ++l) rho[l] = 0, jx[l] = 0, jy[l] = 0;
     for (int i = 0; i < Q; ++i)
@@ -174,9 +185,17 @@ SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const Covere
         u2[l] = inner[l] != 0 ? (jx[l] * jx[l] + jy[l] * jy[l]) / (rho[l] * rho[l])
                               : ux[l] * ux[l] + uy[l] * uy[l];
     }
-    for (int i = 0; i < Q; ++i)
+    if (consecutive) {
+      for (int i = 0; i < Q; ++i) {
+        double* to = ctx.dst + i * ctx.stride + at[0];
 #pragma omp simd
-      for (int l = 0; l < kLanes; ++l) ctx.dst[i * ctx.stride + at[l]] = out[i][l];
+        for (int l = 0; l < kLanes; ++l) to[l] = out[i][l];
+      }
+    } else {
+      for (int i = 0; i < Q; ++i)
+#pragma omp simd
+        for (int l = 0; l < kLanes; ++l) ctx.dst[i * ctx.stride + at[l]] = out[i][l];
+    }
     for (int l = 0; l < used; ++l) {
       const Vec2 given(rho[l] * sx[l] - jx[l], rho[l] * sy[l] - jy[l]);
       node.exchange[k0 + l] = inner[l] != 0 ? given : b[l] * given;

@@ -183,7 +183,7 @@ TEST(Covered, CellsWithZeroRatioFollowThePlainLattice) {
   std::vector<lb::CoveredCell> cells;
   for (int j : {20, 3, 11, 11, 31, 0})
     for (int i : {0, 7, 8, 9, 31, 7})
-      cells.push_back({covered.nodeIndex(i, j), 0.0, 0.0, 0.0, false});
+      cells.push_back({std::int32_t(covered.nodeIndex(i, j)), false, 0.0, 0.0, 0.0});
   covered.setCoveredCells(cells, false);
   for (int s = 0; s < 200; ++s) plain.step(), covered.step();
   double worst = 0;
@@ -211,8 +211,9 @@ TEST(Covered, SweepWithTheBulkEqualsTheSeparatePass) {
     for (int i = 0; i < n; ++i)
       if (u(rng) < 0.15) {
         const double eps = u(rng) < 0.3 ? 1.0 : u(rng);
-        sorted.push_back({probe.nodeIndex(i, j), eps, 0.02 * (u(rng) - 0.5), 0.02 * (u(rng) - 0.5),
-                          eps == 1.0 && u(rng) < 0.5});
+        const double ux = 0.02 * (u(rng) - 0.5), uy = 0.02 * (u(rng) - 0.5);
+        const bool interior = eps == 1.0 && u(rng) < 0.5;
+        sorted.push_back({std::int32_t(probe.nodeIndex(i, j)), interior, eps, ux, uy});
       }
   std::vector<lb::CoveredCell> shuffled = sorted;
   std::shuffle(shuffled.begin(), shuffled.end(), rng);
@@ -265,11 +266,12 @@ TEST(Covered, VectorLanesAgreeWithTheCellByCellOperator) {
     for (int i = 0; i < n; ++i) {
       const bool solidRow = j % 10 == 3 && i >= 20 && i < 20 + 8 * (j % 7 + 1) + j % 5;
       if (solidRow) {
-        cells.push_back({probe.nodeIndex(i, j), 1.0, 0.01, -0.004, true});
+        cells.push_back({std::int32_t(probe.nodeIndex(i, j)), true, 1.0, 0.01, -0.004});
       } else if (u(rng) < 0.12) {
         const double eps = u(rng) < 0.3 ? 1.0 : u(rng);
-        cells.push_back({probe.nodeIndex(i, j), eps, 0.02 * (u(rng) - 0.5), 0.02 * (u(rng) - 0.5),
-                         eps == 1.0 && u(rng) < 0.5});
+        const double ux = 0.02 * (u(rng) - 0.5), uy = 0.02 * (u(rng) - 0.5);
+        const bool interior = eps == 1.0 && u(rng) < 0.5;
+        cells.push_back({std::int32_t(probe.nodeIndex(i, j)), interior, eps, ux, uy});
       }
     }
   cells.pop_back();  // not a multiple of eight

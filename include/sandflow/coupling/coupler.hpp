@@ -108,6 +108,8 @@ class Coupler {
                        const Vec2& gravity);
   void radixSort(std::vector<std::uint32_t>& keys, std::vector<std::int32_t>& order);
   void groupRuns();
+  // `blendNow`: the explicit coupling's velocities, and lone runs' pieces
+  // left out of order_, pieceCell_ and epsSum_ (see pieceCell_).
   void fillCells(const std::vector<lb::CircleObstacle>& circles, double toLattice, bool blendNow,
                  std::vector<lb::CoveredCell>& cells);
   // How many solids cover covered cell c (its pieces).
@@ -119,11 +121,16 @@ class Coupler {
   std::vector<std::uint8_t> open_;        // per cell: bulk fluid (Grid::open), per topology
   std::vector<std::size_t> pieceStart_;   // per owner (elements, then circles): first piece
   std::vector<std::int32_t> pieceOwner_;  // per piece
-  std::vector<std::int32_t> pieceCell_;   // per piece: its covered cell
+  // Per piece: its covered cell. With explicit coupling, only shared cells'
+  // pieces (and order_, epsSum_ only shared cells'): a lone run's cells are
+  // runCell_ on, its pieces' coverages their cells' (fewer bytes a step).
+  std::vector<std::int32_t> pieceCell_;
   // Every solid's runs, owner by owner (runOwner_, runKeys_: each one's owner
   // and first node), and their order by node (runOrder_).
   std::vector<Run> runs_;
   std::vector<std::int32_t> runOwner_, runOrder_;
+  std::vector<std::int32_t> runStart_;  // per owner: its first run in runs_
+  std::vector<std::int32_t> runCell_;   // per run: its first covered cell when alone, else -1
   std::vector<std::uint32_t> runKeys_;
   // Runs laid end to end in node order form groups: a run alone, whose cells
   // are its own, or runs whose nodes overlap (cells several solids share),
@@ -142,8 +149,12 @@ class Coupler {
   std::vector<Vec3> velocity_;           // per element: (vx, vy, w) the fluid sees
   std::vector<std::int32_t> orderScratch_, bucketStart_;  // the radix sort's buffers
   std::vector<std::uint32_t> keysScratch_;
-  static constexpr std::ptrdiff_t kChunk = 8192;               // cells a parallel task takes
-  std::vector<std::pair<double, std::int32_t>> chunkFastest_;  // per task: |u|^2, cell
+  static constexpr std::ptrdiff_t kChunk = 8192;  // cells a parallel task takes
+  struct Fastest {
+    double u2 = 0;  // |u|^2
+    std::int32_t cell = -1, owner = -1;
+  };
+  std::vector<Fastest> chunkFastest_;  // per task
   // Kept from step to step (a fresh buffer would fault in its pages).
   std::vector<lb::CoveredCell> cellsBuffer_;
   int threads_ = 1;

@@ -26,12 +26,15 @@ struct Grid {
 // of subcell centres inside out of n x n (n = 1 is the binarized stair-step).
 inline constexpr int kExact = 0;
 
+// 32 bytes: every covered cell's is written, then read twice, each step.
 struct CellCover {
-  std::int32_t i, j;  // cell, wrapped into the lattice
-  double eps;         // covered fraction, (0, 1]
-  Vec2 arm;           // cell centre minus the footprint's reference point, unwrapped
-  bool interior;      // eps = 1 and so are its eight neighbours
+  Vec2 arm;                    // cell centre minus the footprint's reference point, unwrapped
+  double eps;                  // covered fraction, (0, 1]
+  std::int32_t i;              // cell, wrapped into the lattice
+  std::int32_t j : 31;         // (rows fit 31 bits: the lattice's size limit is far below)
+  std::uint32_t interior : 1;  // eps = 1 and so are its eight neighbours
 };
+static_assert(sizeof(CellCover) == 32);
 
 // Appends the cells that `f` covers. `reference` is the point arms are measured
 // from (the element's centre). Periodic axes wrap; cells beyond a non-periodic

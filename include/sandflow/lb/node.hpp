@@ -139,12 +139,14 @@ class SlipNode final : public LinkNode {
 // cells (eps = 1 with every neighbour eps = 1) hold no physical fluid: with
 // `equilibriumInterior` they are set to f^eq(rho, u_s) + S, which exchanges the
 // same momentum, rho u_s - j, without carrying a non-equilibrium part.
+// 32 bytes: the list is written, read by the covered pass and swapped each step.
 struct CoveredCell {
-  std::int64_t node;  // padded index of a bulk-fluid node
-  double eps;         // solid ratio, (0, 1]
-  double ux, uy;      // solid velocity, lattice units
+  std::int32_t node;  // padded index of a bulk-fluid node (a lattice has under 2^31)
   bool interior;
+  double eps;     // solid ratio, (0, 1]
+  double ux, uy;  // solid velocity, lattice units
 };
+static_assert(sizeof(CoveredCell) == 32);
 
 class CoveredNode final : public Node {
  public:
