@@ -82,8 +82,9 @@ SF_KERNEL_CLONES StepStats runBlock(const StepContext& ctx, const CoveredNode& n
 // (B = 1), f_-i + f^eq_i(rho, u_s) - f^eq_-i(rho, u) + S; partial, BGK's
 // collide(f) - f = -omega (f - f^eq) + S blended with Omega^s, without
 // colliding again. A batch of eight interior cells skips the fluid's
-// equilibrium. Every lane rounds as the scalar operator does (no FMA
-// contraction), so the populations and the mass sum do not change.
+// equilibrium, and its ratios. Every lane rounds as the scalar operator does
+// (no FMA contraction), so the populations do not change; the mass (which the
+// step's watch tests for NaN) sums lane by lane.
 constexpr int kLanes = 8;
 
 // equilibria() of collision.hpp, operation for operation, for eight lanes.
@@ -115,13 +116,14 @@ SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const Covere
   std::ptrdiff_t pull[Q];
   for (int i = 0; i < Q; ++i) pull[i] = i * ctx.stride - (ex[i] + ey[i] * ctx.rowStride);
   StepStats stats;
+  alignas(64) double mass[kLanes] = {};  // lane by lane, summed at the end (fixed order)
   for (std::ptrdiff_t k0 = first; k0 < last; k0 += kLanes) {
     // A short last batch repeats its last cell in the spare lanes (same
     // inputs, same outputs: written twice to the same node).
     const int used = int(std::min<std::ptrdiff_t>(kLanes, last - k0));
     alignas(64) double f[Q][kLanes], solid[Q][kLanes], fluid[Q][kLanes], out[Q][kLanes];
     alignas(64) double rho[kLanes], jx[kLanes], jy[kLanes], ux[kLanes], uy[kLanes];
-    alignas(64) double sx[kLanes], sy[kLanes], b[kLanes], inner[kLanes], u2[kLanes];
+    alignas(64) double sx[kLanes], sy[kLanes], eps[kLanes], b[kLanes], inner[kLanes], u2[kLanes];
     std::ptrdiff_t at[kLanes];
 #pragma omp simd
     for (int l = 0; l < kLanes; ++l) {
@@ -129,7 +131,7 @@ SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const Covere
       at[l] = c.node;
       sx[l] = c.ux, sy[l] = c.uy;
       inner[l] = c.interior && node.equilibriumInterior ? 1.0 : 0.0;
-      b[l] = c.eps * (tau - 0.5) / ((1.0 - c.eps) + (tau - 0.5));
+      eps[l] = c.eps;
     }
     // Eight consecutive nodes (a row of a solid, mostly) load and store as
     // vectors; any others gather and scatter, which cost several times more.
@@ -160,8 +162,13 @@ SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const Covere
 #pragma omp simd
         for (int l = 0; l < kLanes; ++l) out[i][l] = solid[i][l] + source[i];
 #pragma omp simd
-      for (int l = 0; l < kLanes; ++l) u2[l] = (jx[l] * jx[l] + jy[l] * jy[l]) / (rho[l] * rho[l]);
+      for (int l = 0; l < kLanes; ++l) {
+        u2[l] = (jx[l] * jx[l] + jy[l] * jy[l]) / (rho[l] * rho[l]);
+        b[l] = 1.0;  // not needed: interior cells give all of rho u_s - j
+      }
     } else {
+#pragma omp simd
+      for (int l = 0; l < kLanes; ++l) b[l] = eps[l] * (tau - 0.5) / ((1.0 - eps[l]) + (tau - 0.5));
 #pragma omp simd
       for (int l = 0; l < kLanes; ++l) ux[l] = jx[l] / rho[l], uy[l] = jy[l] / rho[l];
       laneEquilibria(rho, ux, uy, fluid);
@@ -199,9 +206,11 @@ SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const Covere
     for (int l = 0; l < used; ++l) {
       const Vec2 given(rho[l] * sx[l] - jx[l], rho[l] * sy[l] - jy[l]);
       node.exchange[k0 + l] = inner[l] != 0 ? given : b[l] * given;
-      stats.merge({rho[l], u2[l]});
+      mass[l] += rho[l];
+      stats.maxU2 = u2[l] > stats.maxU2 ? u2[l] : stats.maxU2;
     }
   }
+  for (int l = 0; l < kLanes; ++l) stats.mass += mass[l];
   return stats;
 }
 
