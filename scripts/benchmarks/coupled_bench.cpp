@@ -12,7 +12,7 @@
 // it). Each time is the best of R repetitions. The bare kernels and the
 // Manager step the same lattice or elements in quartets (bare, Manager,
 // Manager, bare), and the overhead is the median of the quartets' ratios
-// (6R + 1 quartets of short phases for the fluid, 21 for the elements), so
+// (101 quartets of single steps for the fluid, 1001 for the elements), so
 // that a noisy neighbour, a drifting machine or state, or where the pages
 // fall disturbs both alike. The coupled scene with exact areas runs 4R + 1
 // times, each against a copy roofline measured just before it, and its
@@ -248,41 +248,43 @@ int main(int argc, char** argv) {
   // Also the Manager's own code alone: its steps' wall time less the time it
   // spends inside the kernels (its Times), which does not depend on the noise.
   double bare = 1e300, managed = 1e300, fluidOverhead = 0, managerWall = 0, managerInside = 0;
+  const int fluidQuartets = quick ? 11 : 101;
   {
     sim::Manager m;
     m.setThreads(threads);
     m.createLattice(channel(n));
     lb::Lattice& lattice = m.lattice();
     for (int k = 0; k < 3; ++k) lattice.step();
-    // Short phases, many quartets: the machine's speed drifts over seconds.
-    const int chunk = std::max(1, steps / 4);
+    // Quartets of single steps: the machine's speed drifts over seconds.
     const Overhead o = overhead(
         [&] {
           const auto t0 = Clock::now();
-          for (int k = 0; k < chunk; ++k) lattice.step();
-          return seconds(t0) / chunk;
+          lattice.step();
+          return seconds(t0);
         },
         [&] {
           const double inside = m.times().fluid + m.times().elements;
           const auto t0 = Clock::now();
-          const double perStep = timeSteps(m, chunk).total;
-          managerWall += seconds(t0);
+          m.step();
+          const double t = seconds(t0);
+          managerWall += t;
           managerInside += m.times().fluid + m.times().elements - inside;
-          return perStep;
+          return t;
         },
-        6 * reps + 1);
+        fluidQuartets);
     bare = o.bare, managed = o.managed, fluidOverhead = o.percent;
   }
   const double fluidOwn = (managerWall - managerInside) / managerWall * 100;
   std::printf(
-      "fluid only, %dx%d, %d threads: bare lattice %.2f ms/step (%.1f MLUPS, %.1f%% of "
-      "roofline), through the Manager %.2f ms/step (%+.2f%%; its own code %.3f%% of the step)\n",
-      n, n, threads, bare * 1e3, n * n / bare / 1e6, n * n / bare / 1e6 / roof * 100, managed * 1e3,
-      fluidOverhead, fluidOwn);
+      "fluid only, %dx%d, %d threads, %d quartets of single steps: bare lattice %.2f ms/step "
+      "(%.1f MLUPS, %.1f%% of roofline), through the Manager %.2f ms/step (best of each; median of "
+      "the quartets' ratios %+.2f%%; its own code %.3f%% of the step)\n",
+      n, n, threads, fluidQuartets, bare * 1e3, n * n / bare / 1e6, n * n / bare / 1e6 / roof * 100,
+      managed * 1e3, fluidOverhead, fluidOwn);
 
   // 2. Elements only: the bare assembly and the same through the Manager. The
-  //    discs spread and collide, so the state each one meets changes: short
-  //    phases, compared in quartets.
+  //    discs spread and collide, so the state each one meets changes: single
+  //    steps, compared in quartets.
   double elementOverhead = 0, elementOwn = 0;
   {
     auto build = [](dem::Assembly& a) {
@@ -301,18 +303,18 @@ int main(int argc, char** argv) {
     build(m.assembly());
     dem::Assembly& a = m.assembly();  // the same elements, bare and through the Manager
     const double dt = m.timestep();
-    const int demSteps = 50, quartets = quick ? 5 : 21;
+    const int quartets = quick ? 101 : 1001;
     double wall = 0, within = 0;
     const Overhead o = overhead(
         [&] {
           const auto t0 = Clock::now();
-          for (int k = 0; k < demSteps; ++k) a.step(dt, Vec2::Zero());
+          a.step(dt, Vec2::Zero());
           return seconds(t0);
         },
         [&] {
           const double inside = m.times().fluid + m.times().elements;
           const auto t0 = Clock::now();
-          for (int k = 0; k < demSteps; ++k) m.step();
+          m.step();
           const double t = seconds(t0);
           wall += t, within += m.times().fluid + m.times().elements - inside;
           return t;
@@ -320,10 +322,10 @@ int main(int argc, char** argv) {
         quartets);
     elementOverhead = o.percent, elementOwn = (wall - within) / wall * 100;
     std::printf(
-        "elements only, 10000 discs, %d quartets of %d-step phases: bare assembly %.4f s, through "
-        "the Manager %.4f s (best of each; median of the quartets' ratios %+.2f%%; its own code "
-        "%.3f%% of the step)\n\n",
-        quartets, demSteps, o.bare, o.managed, elementOverhead, elementOwn);
+        "elements only, 10000 discs, %d quartets of single steps: bare assembly %.3f ms/step, "
+        "through the Manager %.3f ms/step (best of each; median of the quartets' ratios %+.2f%%; "
+        "its own code %.3f%% of the step)\n\n",
+        quartets, o.bare * 1e3, o.managed * 1e3, elementOverhead, elementOwn);
   }
 
   // 3. The coupled scene, and 4. each solid-ratio setting on it.
