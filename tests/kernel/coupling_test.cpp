@@ -237,6 +237,73 @@ TEST(Coupling, SharedCellsGiveTheirWholeExchangeToTheirOwners) {
   EXPECT_NEAR(solids.y(), -fluid.y(), 1e-12 * size);
 }
 
+// Each solid's force and torque are the exchange of its own cells, share by
+// share, whether a cell is its alone (the force sums read those from the
+// solid's runs) or shared: recomputed here from the solids' coverage and the
+// lattice's list, for both ways of sharing. Held discs spin in place, so the
+// coverage of the last step is that of their poses now.
+TEST(Coupling, EachSolidGetsTheExchangeOfItsOwnCells) {
+  for (const coupling::Share share : {coupling::Share::coverage, coupling::Share::equal}) {
+    sim::Manager m;
+    const int n = 64;
+    m.createLattice(test::periodicSquare(1.0, n, 0.01));
+    coupling::Settings settings = m.coupling();
+    settings.share = share;
+    m.setCoupling(settings);
+    const int mat = test::softMaterial(m, 3.0);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    const std::uint8_t held = dem::holdX | dem::holdY | dem::holdRotation;
+    for (int k = 0; k < 30; ++k)
+      test::addDisc(m, mat, Vec2(u(rng), u(rng)), 0.03 + 0.09 * u(rng), Vec2::Zero(),
+                    0.2 * (u(rng) - 0.5), held);
+    m.lattice().addCircle({-1, Vec2(0.47, 0.52), 0.45, true, Vec2::Zero(), 0.05});
+    for (int k = 0; k < 3; ++k) m.step();
+
+    // Every solid's cells as the coupler measures them, and each cell's
+    // coverage sum and owner count.
+    coupling::Grid g;
+    g.h = 1.0 / n, g.nx = g.ny = n, g.periodicX = g.periodicY = true;
+    const dem::Bodies& b = m.assembly().bodies();
+    std::vector<std::vector<coupling::CellCover>> covers(b.size());
+    std::vector<double> sum(n * n, 0.0);
+    std::vector<int> owners(n * n, 0);
+    for (int s = 0; s < b.size(); ++s) {
+      coupling::cover(*coupling::footprintOf(*b.shape[s], b.x[s], b.angle[s]), b.x[s], g,
+                      coupling::kExact, covers[s]);
+      for (const coupling::CellCover& c : covers[s])
+        sum[c.j * n + c.i] += c.eps, ++owners[c.j * n + c.i];
+    }
+    std::vector<coupling::CellCover> wall;
+    coupling::cover(*coupling::circleFootprint(Vec2(0.47, 0.52), 0.45, true), Vec2(0.47, 0.52), g,
+                    coupling::kExact, wall);
+    for (const coupling::CellCover& c : wall) sum[c.j * n + c.i] += c.eps, ++owners[c.j * n + c.i];
+
+    const lb::Lattice& l = m.lattice();
+    std::map<std::int64_t, std::size_t> listed;  // node -> its place in the lattice's list
+    for (std::size_t k = 0; k < l.coveredCells().size(); ++k) listed[l.coveredCells()[k].node] = k;
+    const double scale = std::pow(l.params().h, 3) / (l.params().dt * l.params().dt);
+    int alone = 0, shared = 0;
+    for (int s = 0; s < b.size(); ++s) {
+      Vec2 force = Vec2::Zero();
+      double torque = 0, size = 0;
+      for (const coupling::CellCover& c : covers[s]) {
+        const int at = c.j * n + c.i;
+        const double part = share == coupling::Share::equal ? 1.0 / owners[at] : c.eps / sum[at];
+        const Vec2 F = -part * scale * l.coveredExchange()[listed.at(l.nodeIndex(c.i, c.j))];
+        force += F, torque += cross(c.arm, F), size += F.norm();
+        (owners[at] == 1 ? alone : shared) += 1;
+      }
+      EXPECT_NEAR(b.fluidForce[s].x(), force.x(), 1e-12 * size) << s;
+      EXPECT_NEAR(b.fluidForce[s].y(), force.y(), 1e-12 * size) << s;
+      EXPECT_NEAR(b.fluidTorque[s], torque, 1e-12 * size) << s;
+      EXPECT_GT(size, 0.0) << s;
+    }
+    EXPECT_GT(alone, 500);  // both kinds of cells were exercised
+    EXPECT_GT(shared, 200);
+  }
+}
+
 TEST(Coupling, TooFastASolidStopsTheStepBeforeAnythingChanges) {
   sim::Manager m;
   m.createLattice(test::periodicSquare(1.0, 32, 0.01));
