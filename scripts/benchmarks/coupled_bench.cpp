@@ -180,6 +180,17 @@ std::pair<double, double> couette(int subcells) {
 
 }  // namespace
 
+// One Manager step, timed: its wall time, also added to `wall`, and the part
+// of it inside the kernels added to `inside` (the rest is the Manager's own code).
+double timedManagerStep(sim::Manager& m, double& wall, double& inside) {
+  const double before = m.times().fluid + m.times().elements;
+  const auto t0 = Clock::now();
+  m.step();
+  const double t = seconds(t0);
+  wall += t, inside += m.times().fluid + m.times().elements - before;
+  return t;
+}
+
 // The Manager's cost over a bare kernel: the two timed in quartets, A B B A
 // or B A A B, each giving one ratio (the Manager's two times over the bare
 // kernel's two), so that a state or a machine that drifts steadily cancels
@@ -271,16 +282,7 @@ int main(int argc, char** argv) {
           lattice.step();
           return seconds(t0);
         },
-        [&] {
-          const double inside = m.times().fluid + m.times().elements;
-          const auto t0 = Clock::now();
-          m.step();
-          const double t = seconds(t0);
-          managerWall += t;
-          managerInside += m.times().fluid + m.times().elements - inside;
-          return t;
-        },
-        fluidQuartets);
+        [&] { return timedManagerStep(m, managerWall, managerInside); }, fluidQuartets);
     bare = o.bare, managed = o.managed, fluidOverhead = o.percent;
   }
   const double fluidOwn = (managerWall - managerInside) / managerWall * 100;
@@ -320,15 +322,7 @@ int main(int argc, char** argv) {
           a.step(dt, Vec2::Zero());
           return seconds(t0);
         },
-        [&] {
-          const double inside = m.times().fluid + m.times().elements;
-          const auto t0 = Clock::now();
-          m.step();
-          const double t = seconds(t0);
-          wall += t, within += m.times().fluid + m.times().elements - inside;
-          return t;
-        },
-        quartets);
+        [&] { return timedManagerStep(m, wall, within); }, quartets);
     elementOverhead = o.percent, elementOwn = (wall - within) / wall * 100;
     std::printf(
         "elements only, 10000 discs, %d quartets of single steps: bare assembly %.3f ms/step, "

@@ -148,8 +148,7 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
       for (std::ptrdiff_t k = c * kChunk; k < std::min(std::ptrdiff_t(total), (c + 1) * kChunk);
            ++k) {
         const double u2 = cells[k].ux * cells[k].ux + cells[k].uy * cells[k].uy;
-        if (!cells[k].interior && u2 > best.u2)
-          best = {u2, std::int32_t(k), pieceOwner_[order_[cellStart_[k]]]};
+        if (!cells[k].interior && u2 > best.u2) best = {u2, pieceOwner_[order_[cellStart_[k]]]};
       }
       chunkFastest_[c] = best;
     }
@@ -332,7 +331,11 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
         for (std::int32_t k = 0; k < run.length; ++k, ++cell, ++entry) {
           const CellCover& p = from[run.first + k];
           cellStart_[cell] = entry;
-          if (indexAll) order_[entry] = g0 + k, pieceCell_[g0 + k] = cell, epsSum_[cell] = p.eps;
+          if (indexAll) {
+            order_[entry] = g0 + k;
+            pieceCell_[g0 + k] = cell;
+            epsSum_[cell] = p.eps;
+          }
           cells[cell] = {std::int32_t(run.node + k), bool(p.interior), std::min(1.0, p.eps), 0.0,
                          0.0};
           if (blendNow) {
@@ -340,7 +343,7 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
             // cellVelocity's sum for one piece: its weight eps / eps is 1 exactly.
             const Vec2 u(0 + toLattice * v.x(), 0 + toLattice * v.y());
             cells[cell].ux = u.x(), cells[cell].uy = u.y();
-            if (!p.interior && u.squaredNorm() > best.u2) best = {u.squaredNorm(), cell, o};
+            if (!p.interior && u.squaredNorm() > best.u2) best = {u.squaredNorm(), o};
           }
         }
         continue;
@@ -364,7 +367,7 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
           const Vec2 u = cellVelocity(entry, entry + (end - k), sum, circles, toLattice);
           cells[cell].ux = u.x(), cells[cell].uy = u.y();
           if (!interior && u.squaredNorm() > best.u2)
-            best = {u.squaredNorm(), cell, pieceOwner_[g[k].second]};
+            best = {u.squaredNorm(), pieceOwner_[g[k].second]};
         }
         entry += end - k, ++cell, k = end;
       }

@@ -16,20 +16,25 @@ using d2q9::Q;
 
 constexpr std::ptrdiff_t kBlock = 256;
 
-// The body forcing's term S_i = 3 w_i e_i.F of every direction.
-void forcingSource(const CollisionParams& p, double (&source)[Q]) {
-  for (int i = 0; i < Q; ++i)
-    source[i] = 3.0 * d2q9::w[i] * (d2q9::ex[i] * p.fx + d2q9::ey[i] * p.fy);
-}
+// What every cell of a pass shares: tau and the body forcing's term
+// S_i = 3 w_i e_i.F of every direction.
+struct PassConstants {
+  double tau;
+  double source[Q];
+  explicit PassConstants(const CollisionParams& p) : tau(1.0 / p.omegaPlus) {
+    for (int i = 0; i < Q; ++i)
+      source[i] = 3.0 * d2q9::w[i] * (d2q9::ex[i] * p.fx + d2q9::ey[i] * p.fy);
+  }
+};
 
 template <Collision C, ForceScheme S>
 SF_KERNEL_CLONES StepStats runBlock(const StepContext& ctx, const CoveredNode& node,
                                     std::ptrdiff_t first, std::ptrdiff_t last) {
   using namespace d2q9;
   const CollisionParams& p = ctx.params;
-  const double tau = 1.0 / p.omegaPlus;
-  double source[Q];
-  forcingSource(p, source);
+  const PassConstants pass(p);
+  const double tau = pass.tau;
+  const double* source = pass.source;
   StepStats stats;
   for (std::ptrdiff_t k = first; k < last; ++k) {
     const CoveredCell& cell = node.cells[k];
@@ -110,9 +115,9 @@ SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const Covere
                                             std::ptrdiff_t first, std::ptrdiff_t last) {
   using namespace d2q9;
   const CollisionParams& p = ctx.params;
-  const double tau = 1.0 / p.omegaPlus;
-  double source[Q];
-  forcingSource(p, source);
+  const PassConstants pass(p);
+  const double tau = pass.tau;
+  const double* source = pass.source;
   std::ptrdiff_t pull[Q];
   for (int i = 0; i < Q; ++i) pull[i] = i * ctx.stride - (ex[i] + ey[i] * ctx.rowStride);
   StepStats stats;

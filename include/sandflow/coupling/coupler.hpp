@@ -151,8 +151,8 @@ class Coupler {
   std::vector<std::uint32_t> keysScratch_;
   static constexpr std::ptrdiff_t kChunk = 8192;  // cells a parallel task takes
   struct Fastest {
-    double u2 = 0;  // |u|^2
-    std::int32_t cell = -1, owner = -1;
+    double u2 = 0;            // |u|^2 of its first fastest cell
+    std::int32_t owner = -1;  // and that cell's (first) owner
   };
   std::vector<Fastest> chunkFastest_;  // per task
   // Kept from step to step (a fresh buffer would fault in its pages).
