@@ -27,6 +27,15 @@ Grid gridOf(const lb::Lattice& lattice) {
   return g;
 }
 
+// Asks for the cache lines of [p, p + bytes) ahead of use. The passes over
+// covered cells visit each solid's run of cells from a place the hardware's
+// prefetcher cannot guess (the runs are in node order, their cells solid by
+// solid), and would otherwise wait on memory at each run's start.
+void prefetch(const void* p, std::size_t bytes) {
+  const char* c = static_cast<const char*>(p);
+  for (std::size_t k = 0; k < bytes; k += 64) __builtin_prefetch(c + k);
+}
+
 bool covers(const dem::Bodies& b, int s) {
   return !b.ghost[s] && b.shape[s]->type() != dem::ShapeType::wall;
 }
@@ -65,8 +74,15 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     for (int j = 0; j < grid.ny; ++j)
       for (int i = 0; i < grid.nx; ++i)
         open_[std::size_t(j) * grid.nx + i] = lattice.kind(i, j) == lb::NodeKind::fluid;
+    const int chunks = grid.openChunksPerRow();
+    openChunks_.assign(std::size_t(chunks) * grid.ny, 1);
+    for (int j = 0; j < grid.ny; ++j)
+      for (int i = 0; i < grid.nx; ++i)
+        if (!open_[std::size_t(j) * grid.nx + i])
+          openChunks_[std::size_t(j) * chunks + i / Grid::kOpenChunk] = 0;
   }
   grid.open = open_.data();
+  grid.openChunks = openChunks_.data();
   elements_.resize(n);
   circles_.resize(circles.size());
 
@@ -263,6 +279,7 @@ void Coupler::groupRuns() {
   radixSort(runKeys_, runOrder_);  // stable: equal first nodes in owner order
   groups_.clear(), groupPieces_.clear();
   runCell_.assign(runs, -1);
+  pieceOwner_.resize(pieceStart_.back());
   std::int32_t cellCount = 0, entries = 0;
   auto lastNode = [&](std::int32_t run) { return runs_[run].node + runs_[run].length - 1; };
   for (std::size_t q = 0; q < runs;) {
@@ -281,8 +298,10 @@ void Coupler::groupRuns() {
       for (std::size_t k = q; k < end; ++k) {
         const std::int32_t r = runOrder_[k];
         const std::int32_t g0 = std::int32_t(pieceStart_[runOwner_[r]]) + runs_[r].first;
-        for (std::int32_t t = 0; t < runs_[r].length; ++t)
+        for (std::int32_t t = 0; t < runs_[r].length; ++t) {
           groupPieces_.push_back({runs_[r].node + std::uint32_t(t), g0 + t});
+          pieceOwner_[g0 + t] = runOwner_[r];
+        }
       }
       std::sort(groupPieces_.begin() + from, groupPieces_.end());
       std::int32_t distinct = 0;
@@ -307,18 +326,25 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
   const std::size_t pieces = pieceStart_.back();
   cells.resize(total), epsSum_.resize(total), cellStart_.resize(total + 1);
   cellStart_[total] = std::int32_t(pieces);
-  order_.resize(pieces), pieceOwner_.resize(pieces), pieceCell_.resize(pieces);
-  // Each piece's owner first (shared groups look them up).
+  order_.resize(pieces), pieceCell_.resize(pieces);
+  const bool indexAll = !blendNow;  // the implicit coupling reads every piece's index
+  // Every piece's owner (groupRuns gave shared groups' pieces theirs).
   const std::int32_t owners = std::int32_t(pieceStart_.size()) - 1;
-  for (std::int32_t o = 0; o < owners; ++o)
+  for (std::int32_t o = 0; o < owners && indexAll; ++o)
     std::fill(pieceOwner_.begin() + pieceStart_[o], pieceOwner_.begin() + pieceStart_[o + 1], o);
   const std::ptrdiff_t tasks = std::max<std::ptrdiff_t>(1, std::ptrdiff_t(total) / kChunk);
   chunkFastest_.assign(tasks, Fastest{});
-  const bool indexAll = !blendNow;  // the implicit coupling reads every piece's index
 #pragma omp parallel for schedule(static) num_threads(threads_) if (tasks > 1)
   for (std::ptrdiff_t t = 0; t < tasks; ++t) {
     Fastest best;
-    for (std::ptrdiff_t q = groups * t / tasks; q < groups * (t + 1) / tasks; ++q) {
+    const std::ptrdiff_t qEnd = groups * (t + 1) / tasks;
+    for (std::ptrdiff_t q = groups * t / tasks; q < qEnd; ++q) {
+      constexpr std::ptrdiff_t kAhead = 4;  // groups: about a hundred cells
+      if (q + kAhead < qEnd && groups_[q + kAhead].run >= 0) {
+        const std::int32_t r = groups_[q + kAhead].run;
+        prefetch(coverOf(runOwner_[r]).cells.data() + runs_[r].first,
+                 std::size_t(runs_[r].length) * sizeof(CellCover));
+      }
       const Group& grp = groups_[q];
       std::int32_t cell = grp.firstCell, entry = grp.firstEntry;
       if (grp.run >= 0) {
@@ -330,7 +356,9 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
         const Motion motion = ownerMotion(o, circles);  // once for the run
         for (std::int32_t k = 0; k < run.length; ++k, ++cell, ++entry) {
           const CellCover& p = from[run.first + k];
-          cellStart_[cell] = entry;
+          // A lone cell's pieces are looked up only with the implicit
+          // coupling; its run's first entry also ends a shared cell before it.
+          if (indexAll || k == 0) cellStart_[cell] = entry;
           if (indexAll) {
             order_[entry] = g0 + k;
             pieceCell_[g0 + k] = cell;
@@ -481,6 +509,10 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
     // Run by run, piece by piece: a lone run's pieces have its cells to
     // themselves (share 1), a shared run's look theirs up.
     for (std::int32_t r = runStart_[o]; r < runStart_[o + 1]; ++r) {
+      constexpr std::int32_t kAhead = 2;  // runs
+      if (r + kAhead < runStart_[o + 1] && runCell_[r + kAhead] >= 0)
+        prefetch(exchange.data() + runCell_[r + kAhead],
+                 std::size_t(runs_[r + kAhead].length) * sizeof(Vec2));
       const Run& run = runs_[r];
       const std::int32_t lone = runCell_[r];
       for (std::int32_t k = 0; k < run.length; ++k) {
@@ -526,6 +558,7 @@ void Coupler::clear(dem::Assembly& assembly) {
   elements_.clear();
   circles_.clear();
   open_.clear();
+  openChunks_.clear();
   topology_ = 0;  // a lattice's versions start above 0: the next one is measured afresh
   pieceOwner_.clear();
   pieceCell_.clear();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace sf::coupling {
 namespace {
@@ -111,8 +112,11 @@ bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int s
       const double e = eps[r.at + (i - r.lo)];
       if (e <= 0) continue;
       const int wi = wrap(i, g.nx, g.periodicX);
-      if (wi < 0 || (g.open && !g.open[std::size_t(j) * g.nx + wi])) continue;
-      out.push_back({arm(i, b), e, wi, j, inner && i >= innerLo && i <= innerHi});
+      if (wi < 0 || !g.isOpen(wi, j)) continue;
+      // Built whole, then copied: filled in place, the bit-field's word would
+      // first be read from the new slot, a cache miss a cell.
+      const CellCover c{arm(i, b), e, wi, j, inner && i >= innerLo && i <= innerHi};
+      std::memcpy(static_cast<void*>(&out.emplace_back()), &c, sizeof c);
     }
   }
   return true;
@@ -137,6 +141,11 @@ void cover(const Footprint& f, const Vec2& reference, const Grid& g, int subcell
   }
   if (i0 > i1 || j0 > j1) return;
   const int w = i1 - i0 + 1, hgt = j1 - j0 + 1;
+  // The slots this solid's cells will most likely take (`out` keeps its
+  // capacity from the last step), asked for ahead of the area work: the
+  // lattice's sweep has evicted them since.
+  for (std::size_t k = out.size(); k < out.capacity(); k += 64 / sizeof(CellCover))
+    __builtin_prefetch(out.data() + k, 1);
   if (!f.everywhere && coverByRows(f, reference, g, subcells, i0, i1, j0, j1, out)) return;
   // Coverage on the visited block, with a ring of zeros for the interior test.
   thread_local std::vector<double> eps;  // scratch, reused: no allocation per element
@@ -179,7 +188,7 @@ void cover(const Footprint& f, const Vec2& reference, const Grid& g, int subcell
       const double e = at(a, b);
       if (e <= 0) continue;
       const int i = wrap(i0 + a, g.nx, g.periodicX), j = wrap(j0 + b, g.ny, g.periodicY);
-      if (i < 0 || j < 0 || (g.open && !g.open[std::size_t(j) * g.nx + i])) continue;
+      if (i < 0 || j < 0 || !g.isOpen(i, j)) continue;
       bool interior = e >= 1;
       for (int db = -1; db <= 1 && interior; ++db)
         for (int da = -1; da <= 1 && interior; ++da) interior = at(a + da, b + db) >= 1;

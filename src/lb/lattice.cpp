@@ -411,7 +411,9 @@ void Lattice::swapCoveredCells(std::vector<CoveredCell>& cells, bool equilibrium
                                bool inNodeOrder) {
   covered_.cells.swap(cells);
   covered_.equilibriumInterior = equilibriumInterior;
-  covered_.exchange.assign(covered_.cells.size(), Vec2::Zero());
+  // Not zeroed: the next step writes every cell's (the force sums read them
+  // after it), and zeroing cost a pass over the array a step.
+  covered_.exchange.resize(covered_.cells.size());
   static_cast<FluidNode&>(*kinds_.front()).planSweep(covered_.cells, inNodeOrder);
 }
 

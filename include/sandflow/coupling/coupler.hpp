@@ -119,8 +119,11 @@ class Coupler {
 
   std::vector<Cached> elements_, circles_;
   std::vector<std::uint8_t> open_;        // per cell: bulk fluid (Grid::open), per topology
+  std::vector<std::uint8_t> openChunks_;  // Grid::openChunks of open_
   std::vector<std::size_t> pieceStart_;   // per owner (elements, then circles): first piece
-  std::vector<std::int32_t> pieceOwner_;  // per piece
+  // Per piece: its owner. With explicit coupling, only shared cells' pieces
+  // (the rest have their owner in their run's).
+  std::vector<std::int32_t> pieceOwner_;
   // Per piece: its covered cell. With explicit coupling, only shared cells'
   // pieces (and order_, epsSum_ only shared cells'): a lone run's cells are
   // runCell_ on, its pieces' coverages their cells' (fewer bytes a step).
@@ -144,7 +147,9 @@ class Coupler {
   std::vector<Group> groups_;
   std::vector<std::pair<std::uint32_t, std::int32_t>> groupPieces_;  // shared groups': node, piece
   std::vector<std::int32_t> order_;      // pieces in node order, equal nodes in piece order
-  std::vector<std::int32_t> cellStart_;  // per covered cell: its first entry in order_
+  // Per covered cell: its first entry in order_. With explicit coupling, only
+  // shared cells and each lone run's first cell (sharing reads no other).
+  std::vector<std::int32_t> cellStart_;
   std::vector<double> epsSum_;           // per covered cell
   std::vector<Vec3> velocity_;           // per element: (vx, vy, w) the fluid sees
   std::vector<std::int32_t> orderScratch_, bucketStart_;  // the radix sort's buffers
