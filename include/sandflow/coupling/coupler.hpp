@@ -146,12 +146,12 @@ class Coupler {
   };
   std::vector<Group> groups_;
   std::vector<std::pair<std::uint32_t, std::int32_t>> groupPieces_;  // shared groups': node, piece
-  std::vector<std::int32_t> order_;      // pieces in node order, equal nodes in piece order
+  std::vector<std::int32_t> order_;  // pieces in node order, equal nodes in piece order
   // Per covered cell: its first entry in order_. With explicit coupling, only
   // shared cells and each lone run's first cell (sharing reads no other).
   std::vector<std::int32_t> cellStart_;
-  std::vector<double> epsSum_;           // per covered cell
-  std::vector<Vec3> velocity_;           // per element: (vx, vy, w) the fluid sees
+  std::vector<double> epsSum_;                            // per covered cell
+  std::vector<Vec3> velocity_;                            // per element: (vx, vy, w) the fluid sees
   std::vector<std::int32_t> orderScratch_, bucketStart_;  // the radix sort's buffers
   std::vector<std::uint32_t> keysScratch_;
   static constexpr std::ptrdiff_t kChunk = 8192;  // cells a parallel task takes
