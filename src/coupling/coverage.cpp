@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 namespace sf::coupling {
 namespace {
@@ -113,10 +112,12 @@ bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int s
       if (e <= 0) continue;
       const int wi = wrap(i, g.nx, g.periodicX);
       if (wi < 0 || !g.isOpen(wi, j)) continue;
-      // Built whole, then copied: filled in place, the bit-field's word would
-      // first be read from the new slot, a cache miss a cell.
-      const CellCover c{arm(i, b), e, wi, j, inner && i >= innerLo && i <= innerHi};
-      std::memcpy(static_cast<void*>(&out.emplace_back()), &c, sizeof c);
+      // Field by field into the slot (prefetched in cover): a record built
+      // aside and copied was read back whole over its bit-field's fresh
+      // store, which the processor cannot forward (a stall a cell).
+      CellCover& c = out.emplace_back();
+      c.arm = arm(i, b), c.eps = e, c.i = wi, c.j = j;
+      c.interior = inner && i >= innerLo && i <= innerHi;
     }
   }
   return true;
