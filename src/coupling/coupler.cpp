@@ -71,15 +71,13 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   if (remeasure) elements_.clear(), circles_.clear();
   if (remeasure || open_.size() != std::size_t(grid.nx) * grid.ny) {
     open_.assign(std::size_t(grid.nx) * grid.ny, 0);
+    openChunks_.assign(std::size_t(grid.openChunksPerRow()) * grid.ny, 1);
     for (int j = 0; j < grid.ny; ++j)
-      for (int i = 0; i < grid.nx; ++i)
-        open_[std::size_t(j) * grid.nx + i] = lattice.kind(i, j) == lb::NodeKind::fluid;
-    const int chunks = grid.openChunksPerRow();
-    openChunks_.assign(std::size_t(chunks) * grid.ny, 1);
-    for (int j = 0; j < grid.ny; ++j)
-      for (int i = 0; i < grid.nx; ++i)
-        if (!open_[std::size_t(j) * grid.nx + i])
-          openChunks_[std::size_t(j) * chunks + i / Grid::kOpenChunk] = 0;
+      for (int i = 0; i < grid.nx; ++i) {
+        const bool fluid = lattice.kind(i, j) == lb::NodeKind::fluid;
+        open_[std::size_t(j) * grid.nx + i] = fluid;
+        if (!fluid) openChunks_[grid.openChunk(i, j)] = 0;
+      }
   }
   grid.open = open_.data();
   grid.openChunks = openChunks_.data();

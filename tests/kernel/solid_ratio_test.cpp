@@ -279,6 +279,48 @@ TEST(SolidRatio, ContainerCoversTheOutsideAtTheNearestImage) {
   }
 }
 
+// Cells that hold no bulk fluid are left out whether a chunk mask is given
+// or not: the chunks only answer for cells known open, and a closed cell on
+// either side of a chunk's edge (63, 64, 127, 128) still drops out.
+TEST(SolidRatio, ChunkMaskLeavesOutExactlyTheClosedCells) {
+  const int n = 150;
+  Grid g = grid(n, 1.0, true);
+  std::vector<std::uint8_t> open(std::size_t(n) * n, 1);
+  for (int j = 40; j < 110; ++j)
+    for (int i : {63, 64, 127, 128, 149}) open[std::size_t(j) * n + i] = 0;
+  for (int i = 0; i < n; ++i) open[std::size_t(75) * n + i] = 0;  // a closed row
+  std::vector<std::uint8_t> chunks(std::size_t(g.openChunksPerRow()) * n, 1);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if (!open[std::size_t(j) * n + i]) chunks[g.openChunk(i, j)] = 0;
+  g.open = open.data();
+  const auto disc = coupling::circleFootprint(Vec2(96.3, 74.6), 40.2, false);
+  const auto container = coupling::circleFootprint(Vec2(75.1, 75.3), 60.7, true);
+  for (const coupling::Footprint* f : {disc.get(), container.get()}) {
+    std::vector<CellCover> perCell, chunked;
+    g.openChunks = nullptr;
+    coupling::cover(*f, Vec2(96.3, 74.6), g, coupling::kExact, perCell);
+    g.openChunks = chunks.data();
+    coupling::cover(*f, Vec2(96.3, 74.6), g, coupling::kExact, chunked);
+    ASSERT_EQ(perCell.size(), chunked.size());
+    std::size_t dropped = 0;
+    for (std::size_t k = 0; k < perCell.size(); ++k) {
+      EXPECT_EQ(perCell[k].i, chunked[k].i);
+      EXPECT_EQ(perCell[k].j, chunked[k].j);
+      EXPECT_EQ(perCell[k].eps, chunked[k].eps);
+      EXPECT_TRUE(open[std::size_t(chunked[k].j) * n + chunked[k].i]);
+    }
+    // Closed cells were there to drop: without the mask there are more.
+    g.open = nullptr;
+    std::vector<CellCover> all;
+    coupling::cover(*f, Vec2(96.3, 74.6), g, coupling::kExact, all);
+    g.open = open.data();
+    for (const CellCover& c : all) dropped += !open[std::size_t(c.j) * n + c.i];
+    EXPECT_GT(dropped, 100u);
+    EXPECT_EQ(all.size() - dropped, chunked.size());
+  }
+}
+
 // The same footprint without its bands: the pass measures it cell by cell.
 class CellByCell final : public coupling::Footprint {
  public:

@@ -21,15 +21,18 @@ struct Grid {
   // every cell when null.
   const std::uint8_t* open = nullptr;
   // Optional, with `open`: per chunk of kOpenChunk cells of a row (index
-  // j * openChunksPerRow() + i / kOpenChunk), nonzero where all its cells are
-  // open. Small enough to stay in cache, so most cells are known open without
-  // reading `open`, whose lines the lattice's sweep has evicted.
+  // openChunk(i, j)), nonzero where all its cells are open. Small enough to
+  // stay in cache, so most cells are known open without reading `open`, whose
+  // lines the lattice's sweep has evicted.
   const std::uint8_t* openChunks = nullptr;
   static constexpr int kOpenChunk = 64;
   int openChunksPerRow() const { return (nx + kOpenChunk - 1) / kOpenChunk; }
+  std::size_t openChunk(int i, int j) const {
+    return std::size_t(j) * openChunksPerRow() + i / kOpenChunk;
+  }
   bool isOpen(int i, int j) const {
     if (!open) return true;
-    if (openChunks && openChunks[std::size_t(j) * openChunksPerRow() + i / kOpenChunk]) return true;
+    if (openChunks && openChunks[openChunk(i, j)]) return true;
     return open[std::size_t(j) * nx + i] != 0;
   }
 };
