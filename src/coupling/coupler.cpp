@@ -507,10 +507,15 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
     // Run by run, piece by piece: a lone run's pieces have its cells to
     // themselves (share 1), a shared run's look theirs up.
     for (std::int32_t r = runStart_[o]; r < runStart_[o + 1]; ++r) {
+      // The records and exchanges of a run ahead: the lattice's sweep has
+      // evicted both since they were written.
       constexpr std::int32_t kAhead = 2;  // runs
-      if (r + kAhead < runStart_[o + 1] && runCell_[r + kAhead] >= 0)
-        prefetch(exchange.data() + runCell_[r + kAhead],
-                 std::size_t(runs_[r + kAhead].length) * sizeof(Vec2));
+      if (r + kAhead < runStart_[o + 1]) {
+        const Run& next = runs_[r + kAhead];
+        prefetch(from.data() + next.first, std::size_t(next.length) * sizeof(CellCover));
+        if (runCell_[r + kAhead] >= 0)
+          prefetch(exchange.data() + runCell_[r + kAhead], std::size_t(next.length) * sizeof(Vec2));
+      }
       const Run& run = runs_[r];
       const std::int32_t lone = runCell_[r];
       for (std::int32_t k = 0; k < run.length; ++k) {

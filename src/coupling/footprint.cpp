@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "sandflow/dem/polygon.hpp"
 #include "sandflow/dem/superquadric.hpp"
@@ -34,8 +35,10 @@ class CircleFootprint final : public Footprint {
   }
   void rowAreas(double x0, double y0, double h, int first, int last, double* out) const override {
     if (outside_) return Footprint::rowAreas(x0, y0, h, first, last, out);
-    const geometry::DiscBand band(c_, r_, y0, y0 + h);
-    for (int i = first; i <= last; ++i) out[i - first] = band.area(x0 + i * h, x0 + (i + 1) * h);
+    // A row's cells left and right of its full ones come in two calls: one band.
+    if (!band_ || bandY0_ != y0 || bandH_ != h)
+      band_.emplace(c_, r_, y0, y0 + h), bandY0_ = y0, bandH_ = h;
+    band_->areas(x0, h, first, last, out);
   }
   bool band(double y0, double y1, Band& out) const override {
     if (outside_) return false;
@@ -57,6 +60,8 @@ class CircleFootprint final : public Footprint {
   Vec2 c_;
   double r_;
   bool outside_;
+  mutable std::optional<geometry::DiscBand> band_;  // the last row's
+  mutable double bandY0_ = 0, bandH_ = 0;
 };
 
 // A convex polygon, counter-clockwise, with its outward edge normals.

@@ -132,7 +132,7 @@ double DiscBand::arc(double p, double q, double sp, double sq) const {
   return 0.5 * (chord + r_ * r_ * angle);
 }
 
-double DiscBand::part(const Clamped& c, double a, double b) const {
+double DiscBand::part(const Clamped& c, double a, double b, double sa, double sb) const {
   if (c.hi <= 0) return c.hi * (b - a);
   if (c.lo >= r_) return c.lo * (b - a);
   auto overlap = [&](double lo, double hi) {
@@ -141,7 +141,8 @@ double DiscBand::part(const Clamped& c, double a, double b) const {
   // lo on [-r, -tl] and [tl, r], s on [-tl, -th] and [th, tl], hi on [-th, th].
   double sum = c.lo * (overlap(-r_, -c.tl) + overlap(c.tl, r_)) + c.hi * overlap(-c.th, c.th);
   const double sTl = c.tl < r_ ? c.lo : 0.0, sTh = c.th > 0 ? c.hi : r_;  // s at the breakpoints
-  auto end = [&](double t, double at, double known) { return t == at ? known : s(t); };
+  // An arc's end is a breakpoint or the cell's edge a or b.
+  auto end = [&](double t, double at, double known) { return t == at ? known : t == a ? sa : sb; };
   if (const double p = std::max(a, -c.tl), q = std::min(b, -c.th); q > p)
     sum += arc(p, q, end(p, -c.tl, sTl), end(q, -c.th, sTh));
   if (const double p = std::max(a, c.th), q = std::min(b, c.tl); q > p)
@@ -152,7 +153,19 @@ double DiscBand::part(const Clamped& c, double a, double b) const {
 double DiscBand::area(double xa, double xb) const {
   const double a = std::clamp(xa - cx_, -r_, r_), b = std::clamp(xb - cx_, -r_, r_);
   if (!(b > a)) return 0.0;
-  return std::max(0.0, part(above_, a, b) + part(below_, a, b));
+  const double sa = s(a), sb = s(b);
+  return std::max(0.0, part(above_, a, b, sa, sb) + part(below_, a, b, sa, sb));
+}
+
+void DiscBand::areas(double x0, double h, int first, int last, double* out) const {
+  if (first > last) return;
+  double a = std::clamp(x0 + first * h - cx_, -r_, r_), sa = s(a);
+  for (int i = first; i <= last; ++i) {
+    const double b = std::clamp(x0 + (i + 1) * h - cx_, -r_, r_), sb = s(b);
+    out[i - first] =
+        b > a ? std::max(0.0, part(above_, a, b, sa, sb) + part(below_, a, b, sa, sb)) : 0.0;
+    a = b, sa = sb;
+  }
 }
 
 }  // namespace sf::geometry

@@ -21,6 +21,10 @@ class DiscBand {
   DiscBand(const Vec2& c, double r, double y0, double y1);
   // Area of the disc in [xa, xb] x [y0, y1].
   double area(double xa, double xb) const;
+  // area(x0 + i h, x0 + (i + 1) h) for i = first..last into out[i - first],
+  // the same to the bit: neighbouring cells share the half-chord at their
+  // common edge, worked out once.
+  void areas(double x0, double h, int first, int last, double* out) const;
 
  private:
   // clamp(s(t), lo, hi) with s(t) = sqrt(r^2 - t^2), t = x - cx: the band's
@@ -30,7 +34,8 @@ class DiscBand {
     double lo, hi, tl, th;
   };
   Clamped clamped(double lo, double hi) const;
-  double part(const Clamped& c, double a, double b) const;
+  // sa, sb: s at a and b.
+  double part(const Clamped& c, double a, double b, double sa, double sb) const;
   // Integral of s over [p, q], one side of the centre, s known at both ends.
   double arc(double p, double q, double sp, double sq) const;
   double s(double t) const;
