@@ -337,7 +337,7 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
     Fastest best;
     const std::ptrdiff_t qEnd = groups * (t + 1) / tasks;
     for (std::ptrdiff_t q = groups * t / tasks; q < qEnd; ++q) {
-      constexpr std::ptrdiff_t kAhead = 4;  // groups: about a hundred cells
+      constexpr std::ptrdiff_t kAhead = 8;  // groups: about two hundred cells
       if (q + kAhead < qEnd && groups_[q + kAhead].run >= 0) {
         const std::int32_t r = groups_[q + kAhead].run;
         prefetch(coverOf(runOwner_[r]).cells.data() + runs_[r].first,
@@ -509,7 +509,7 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
     for (std::int32_t r = runStart_[o]; r < runStart_[o + 1]; ++r) {
       // The records and exchanges of a run ahead: the lattice's sweep has
       // evicted both since they were written.
-      constexpr std::int32_t kAhead = 2;  // runs
+      constexpr std::int32_t kAhead = 4;  // runs
       if (r + kAhead < runStart_[o + 1]) {
         const Run& next = runs_[r + kAhead];
         prefetch(from.data() + next.first, std::size_t(next.length) * sizeof(CellCover));
