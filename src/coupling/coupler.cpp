@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "sandflow/core/prefetch.hpp"
 #include "sandflow/dem/shape.hpp"
 
 namespace sf::coupling {
@@ -25,15 +26,6 @@ Grid gridOf(const lb::Lattice& lattice) {
   g.periodicX = p.def.sides[lb::left].kind == lb::SideKind::periodic;
   g.periodicY = p.def.sides[lb::bottom].kind == lb::SideKind::periodic;
   return g;
-}
-
-// Asks for the cache lines of [p, p + bytes) ahead of use. The passes over
-// covered cells visit each solid's run of cells from a place the hardware's
-// prefetcher cannot guess (the runs are in node order, their cells solid by
-// solid), and would otherwise wait on memory at each run's start.
-void prefetch(const void* p, std::size_t bytes) {
-  const char* c = static_cast<const char*>(p);
-  for (std::size_t k = 0; k < bytes; k += 64) __builtin_prefetch(c + k);
 }
 
 bool covers(const dem::Bodies& b, int s) {
@@ -174,9 +166,8 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   for (const Fastest& f : chunkFastest_) {
     if (!(f.u2 > fastest2)) continue;
     fastest2 = f.u2;
-    const int owner = f.owner;
-    fastest_.element = owner < n ? b.id[owner] : -1;
-    fastest_.obstacle = owner >= n ? circles[owner - n].id : -1;
+    fastest_.element = f.owner < n ? b.id[f.owner] : -1;
+    fastest_.obstacle = f.owner >= n ? circles[f.owner - n].id : -1;
   }
   fastest_.mach = std::sqrt(fastest2);
   cells_ = total;
@@ -340,8 +331,9 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
       constexpr std::ptrdiff_t kAhead = 8;  // groups: about two hundred cells
       if (q + kAhead < qEnd && groups_[q + kAhead].run >= 0) {
         const std::int32_t r = groups_[q + kAhead].run;
-        prefetch(coverOf(runOwner_[r]).cells.data() + runs_[r].first,
-                 std::size_t(runs_[r].length) * sizeof(CellCover));
+        // The runs are in node order, their cells solid by solid.
+        prefetchForRead(coverOf(runOwner_[r]).cells.data() + runs_[r].first,
+                        std::size_t(runs_[r].length) * sizeof(CellCover));
       }
       const Group& grp = groups_[q];
       std::int32_t cell = grp.firstCell, entry = grp.firstEntry;
@@ -512,9 +504,10 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
       constexpr std::int32_t kAhead = 4;  // runs
       if (r + kAhead < runStart_[o + 1]) {
         const Run& next = runs_[r + kAhead];
-        prefetch(from.data() + next.first, std::size_t(next.length) * sizeof(CellCover));
+        prefetchForRead(from.data() + next.first, std::size_t(next.length) * sizeof(CellCover));
         if (runCell_[r + kAhead] >= 0)
-          prefetch(exchange.data() + runCell_[r + kAhead], std::size_t(next.length) * sizeof(Vec2));
+          prefetchForRead(exchange.data() + runCell_[r + kAhead],
+                          std::size_t(next.length) * sizeof(Vec2));
       }
       const Run& run = runs_[r];
       const std::int32_t lone = runCell_[r];

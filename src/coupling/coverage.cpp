@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sandflow/core/prefetch.hpp"
+
 namespace sf::coupling {
 namespace {
 
@@ -145,8 +147,7 @@ void cover(const Footprint& f, const Vec2& reference, const Grid& g, int subcell
   // The slots this solid's cells will most likely take (`out` keeps its
   // capacity from the last step), asked for ahead of the area work: the
   // lattice's sweep has evicted them since.
-  for (std::size_t k = out.size(); k < out.capacity(); k += 64 / sizeof(CellCover))
-    __builtin_prefetch(out.data() + k, 1);
+  prefetchForWrite(out.data() + out.size(), (out.capacity() - out.size()) * sizeof(CellCover));
   if (!f.everywhere && coverByRows(f, reference, g, subcells, i0, i1, j0, j1, out)) return;
   // Coverage on the visited block, with a ring of zeros for the interior test.
   thread_local std::vector<double> eps;  // scratch, reused: no allocation per element

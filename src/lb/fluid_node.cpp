@@ -6,6 +6,7 @@
 #include <chrono>
 #include <vector>
 
+#include "sandflow/core/prefetch.hpp"
 #include "sandflow/lb/kernel_isa.hpp"
 #include "sandflow/lb/node.hpp"
 
@@ -101,12 +102,9 @@ StepStats sweep(const StepContext& ctx, const std::vector<FluidNode::Span>& span
     // when its spans are done: the sweep has evicted them since they were
     // written, and a block's few hundred give the hardware's prefetcher too
     // short a stream.
-    const char* list = reinterpret_cast<const char*>(covered.cells.data() + cell0);
-    for (std::size_t k = 0; k < (blocks[b].cellEnd - cell0) * sizeof(CoveredCell); k += 64)
-      __builtin_prefetch(list + k);
-    char* gave = reinterpret_cast<char*>(covered.exchange.data() + cell0);
-    for (std::size_t k = 0; k < (blocks[b].cellEnd - cell0) * sizeof(Vec2); k += 64)
-      __builtin_prefetch(gave + k, 1);
+    const std::size_t cells = std::size_t(blocks[b].cellEnd - cell0);
+    prefetchForRead(covered.cells.data() + cell0, cells * sizeof(CoveredCell));
+    prefetchForWrite(covered.exchange.data() + cell0, cells * sizeof(Vec2));
     // The block's spans whole, then its covered cells over them: the mass is
     // the spans', which hold the covered nodes too.
     for (std::int32_t k = span0; k < blocks[b].spanEnd; ++k)
