@@ -3,6 +3,8 @@
 // Cells are processed in fixed blocks whose reductions are combined in block
 // order, so the result does not depend on the thread count.
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "sandflow/lb/collision.hpp"
@@ -80,35 +82,42 @@ SF_KERNEL_CLONES StepStats runBlock(const StepContext& ctx, const CoveredNode& n
   return stats;
 }
 
-// BGK with nodal forcing (the default) eight cells at a time. The cells'
-// populations are gathered into lanes and each step of the operator runs as
-// one loop over the lanes, which vectorizes. The three cases are each computed
-// and one is selected per lane: interior, f^eq(rho, u_s) + S; fully covered
-// (B = 1), f_-i + f^eq_i(rho, u_s) - f^eq_-i(rho, u) + S; partial, BGK's
-// collide(f) - f = -omega (f - f^eq) + S blended with Omega^s, without
+// BGK with nodal forcing (the default) eight cells at a time, each step of the
+// operator one operation on eight-lane vectors (GCC's vector extension: one
+// AVX-512 register, two AVX ones, four SSE ones). The three cases are each
+// computed and one is selected per lane: interior, f^eq(rho, u_s) + S; fully
+// covered (B = 1), f_-i + f^eq_i(rho, u_s) - f^eq_-i(rho, u) + S; partial,
+// BGK's collide(f) - f = -omega (f - f^eq) + S blended with Omega^s, without
 // colliding again. A batch of eight interior cells skips the fluid's
 // equilibrium, and its ratios. Every lane rounds as the scalar operator does
 // (no FMA contraction), so the populations do not change; the mass (which the
-// step's watch tests for NaN) sums lane by lane.
+// step's watch tests for NaN) sums lane by lane. Whole vectors in registers,
+// not lane arrays in memory: a vector read back over eight scalar stores (or
+// two half-width ones) cannot be forwarded and stalls.
 constexpr int kLanes = 8;
+using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
+using LaneMask = std::int64_t __attribute__((vector_size(kLanes * sizeof(double))));
 
-// equilibria() of collision.hpp, operation for operation, for eight lanes.
-SF_ALWAYS_INLINE void laneEquilibria(const double* rho, const double* ux, const double* uy,
-                                     double (&feq)[d2q9::Q][kLanes]) {
-  alignas(64) double even[kLanes];
-#pragma omp simd
-  for (int l = 0; l < kLanes; ++l) {
-    even[l] = 1.0 - 1.5 * (ux[l] * ux[l] + uy[l] * uy[l]);
-    feq[0][l] = d2q9::w[0] * rho[l] * even[l];
+// (By reference: a vector passed by value would change the ABI with the
+// instruction set, which GCC warns of.)
+SF_ALWAYS_INLINE void loadLanes(Lanes& v, const double* from) {
+  std::memcpy(&v, from, sizeof v);
+}
+SF_ALWAYS_INLINE void storeLanes(double* to, const Lanes& v) {
+  std::memcpy(to, &v, sizeof v);
+}
+
+// equilibria() of collision.hpp, operation for operation, on lanes.
+SF_ALWAYS_INLINE void laneEquilibria(const Lanes& rho, const Lanes& ux, const Lanes& uy,
+                                     Lanes (&feq)[d2q9::Q]) {
+  const Lanes even = 1.0 - 1.5 * (ux * ux + uy * uy);
+  feq[0] = d2q9::w[0] * rho * even;
+  for (int i = 1; i <= 4; ++i) {
+    const Lanes eu = double(d2q9::ex[i]) * ux + double(d2q9::ey[i]) * uy;
+    const Lanes wr = d2q9::w[i] * rho, e = even + 4.5 * eu * eu, o = 3.0 * eu;
+    feq[i] = wr * (e + o);
+    feq[i + 4] = wr * (e - o);
   }
-  for (int i = 1; i <= 4; ++i)
-#pragma omp simd
-    for (int l = 0; l < kLanes; ++l) {
-      const double eu = d2q9::ex[i] * ux[l] + d2q9::ey[i] * uy[l];
-      const double wr = d2q9::w[i] * rho[l], e = even[l] + 4.5 * eu * eu, o = 3.0 * eu;
-      feq[i][l] = wr * (e + o);
-      feq[i + 4][l] = wr * (e - o);
-    }
 }
 
 SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const CoveredNode& node,
@@ -121,101 +130,97 @@ SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const Covere
   std::ptrdiff_t pull[Q];
   for (int i = 0; i < Q; ++i) pull[i] = i * ctx.stride - (ex[i] + ey[i] * ctx.rowStride);
   StepStats stats;
-  alignas(64) double mass[kLanes] = {};  // lane by lane, summed at the end (fixed order)
+  Lanes mass = {}, maxU2 = {};  // lane by lane, combined at the end (fixed order)
   for (std::ptrdiff_t k0 = first; k0 < last; k0 += kLanes) {
     // A short last batch repeats its last cell in the spare lanes (same
     // inputs, same outputs: written twice to the same node).
     const int used = int(std::min<std::ptrdiff_t>(kLanes, last - k0));
-    alignas(64) double f[Q][kLanes], solid[Q][kLanes], fluid[Q][kLanes], out[Q][kLanes];
-    alignas(64) double rho[kLanes], jx[kLanes], jy[kLanes], ux[kLanes], uy[kLanes];
-    alignas(64) double sx[kLanes], sy[kLanes], eps[kLanes], b[kLanes], inner[kLanes], u2[kLanes];
+    const CoveredCell* c[kLanes];
     std::ptrdiff_t at[kLanes];
-#pragma omp simd
+    int innerCount = 0;
     for (int l = 0; l < kLanes; ++l) {
-      const CoveredCell& c = node.cells[k0 + std::min(l, used - 1)];
-      at[l] = c.node;
-      sx[l] = c.ux, sy[l] = c.uy;
-      inner[l] = c.interior && node.equilibriumInterior ? 1.0 : 0.0;
-      eps[l] = c.eps;
+      c[l] = &node.cells[k0 + std::min(l, used - 1)];
+      at[l] = c[l]->node;
+      innerCount += c[l]->interior;
     }
+    const bool interiorRule = node.equilibriumInterior;
+    const Lanes sx = {c[0]->ux, c[1]->ux, c[2]->ux, c[3]->ux,
+                      c[4]->ux, c[5]->ux, c[6]->ux, c[7]->ux};
+    const Lanes sy = {c[0]->uy, c[1]->uy, c[2]->uy, c[3]->uy,
+                      c[4]->uy, c[5]->uy, c[6]->uy, c[7]->uy};
+    const LaneMask inner = {-std::int64_t(c[0]->interior && interiorRule),
+                            -std::int64_t(c[1]->interior && interiorRule),
+                            -std::int64_t(c[2]->interior && interiorRule),
+                            -std::int64_t(c[3]->interior && interiorRule),
+                            -std::int64_t(c[4]->interior && interiorRule),
+                            -std::int64_t(c[5]->interior && interiorRule),
+                            -std::int64_t(c[6]->interior && interiorRule),
+                            -std::int64_t(c[7]->interior && interiorRule)};
     // Eight consecutive nodes (a row of a solid, mostly) load and store as
     // vectors; any others gather and scatter, which cost several times more.
-    const bool consecutive = used == kLanes && at[kLanes - 1] - at[0] == kLanes - 1;
+    // (In a list whose nodes ascend, as the coupler's do, the first and the
+    // last tell.)
+    bool consecutive = used == kLanes && at[kLanes - 1] - at[0] == kLanes - 1;
+    if (consecutive && !node.ascending)
+      for (int l = 1; l < kLanes; ++l) consecutive = consecutive && at[l] == at[l - 1] + 1;
+    Lanes f[Q];
     if (consecutive) {
+      for (int i = 0; i < Q; ++i) loadLanes(f[i], ctx.src + at[0] + pull[i]);
+    } else {
       for (int i = 0; i < Q; ++i) {
-        const double* from = ctx.src + at[0] + pull[i];
-#pragma omp simd
-        for (int l = 0; l < kLanes; ++l) f[i][l] = from[l];
+        const double* from = ctx.src + pull[i];
+        f[i] = Lanes{from[at[0]], from[at[1]], from[at[2]], from[at[3]],
+                     from[at[4]], from[at[5]], from[at[6]], from[at[7]]};
       }
-    } else {
-      for (int i = 0; i < Q; ++i)
-#pragma omp simd
-        for (int l = 0; l < kLanes; ++l) f[i][l] = ctx.src[at[l] + pull[i]];
     }
-#pragma omp simd
-    for (int l = 0; l < kLanes; ++l) rho[l] = 0, jx[l] = 0, jy[l] = 0;
-    for (int i = 0; i < Q; ++i)
-#pragma omp simd
-      for (int l = 0; l < kLanes; ++l)
-        rho[l] += f[i][l], jx[l] += ex[i] * f[i][l], jy[l] += ey[i] * f[i][l];
+    Lanes rho = {}, jx = {}, jy = {};
+    for (int i = 0; i < Q; ++i) rho += f[i], jx += double(ex[i]) * f[i], jy += double(ey[i]) * f[i];
+    Lanes solid[Q], out[Q];
     laneEquilibria(rho, sx, sy, solid);
-    double innerLanes = 0;
-    for (int l = 0; l < kLanes; ++l) innerLanes += inner[l];
-    if (innerLanes == kLanes) {
+    Lanes b, u2;
+    if (interiorRule && innerCount == kLanes) {
       // Eight interior cells (a solid's inside, mostly): no fluid equilibrium.
-      for (int i = 0; i < Q; ++i)
-#pragma omp simd
-        for (int l = 0; l < kLanes; ++l) out[i][l] = solid[i][l] + source[i];
-#pragma omp simd
-      for (int l = 0; l < kLanes; ++l) {
-        u2[l] = (jx[l] * jx[l] + jy[l] * jy[l]) / (rho[l] * rho[l]);
-        b[l] = 1.0;  // not needed: interior cells give all of rho u_s - j
-      }
+      for (int i = 0; i < Q; ++i) out[i] = solid[i] + source[i];
+      u2 = (jx * jx + jy * jy) / (rho * rho);
+      b = Lanes{} + 1.0;  // not needed: interior cells give all of rho u_s - j
     } else {
-#pragma omp simd
-      for (int l = 0; l < kLanes; ++l) b[l] = eps[l] * (tau - 0.5) / ((1.0 - eps[l]) + (tau - 0.5));
-#pragma omp simd
-      for (int l = 0; l < kLanes; ++l) ux[l] = jx[l] / rho[l], uy[l] = jy[l] / rho[l];
+      const Lanes eps = {c[0]->eps, c[1]->eps, c[2]->eps, c[3]->eps,
+                         c[4]->eps, c[5]->eps, c[6]->eps, c[7]->eps};
+      b = eps * (tau - 0.5) / ((1.0 - eps) + (tau - 0.5));
+      const Lanes ux = jx / rho, uy = jy / rho;
+      Lanes fluid[Q];
       laneEquilibria(rho, ux, uy, fluid);
+      const Lanes relax = (1.0 - b) * p.omegaPlus;
+      const LaneMask full = b == 1.0;
       for (int i = 0; i < Q; ++i) {
         const int o = opposite[i];
-#pragma omp simd
-        for (int l = 0; l < kLanes; ++l) {
-          // Fully covered (B = 1): f + Omega^s + S; partial: BGK's relaxation
-          // towards the fluid's equilibrium blended with Omega^s (runBlock).
-          const double omega = f[o][l] - f[i][l] + solid[i][l] - fluid[o][l];
-          const double relax = (1.0 - b[l]) * p.omegaPlus;
-          const double partial =
-              f[i][l] - relax * (f[i][l] - fluid[i][l]) + b[l] * omega + source[i];
-          const double covered = f[o][l] + (solid[i][l] - fluid[o][l]) + source[i];
-          const double mixed = b[l] == 1.0 ? covered : partial;
-          out[i][l] = inner[l] != 0 ? solid[i][l] + source[i] : mixed;
-        }
+        // Fully covered (B = 1): f + Omega^s + S; partial: BGK's relaxation
+        // towards the fluid's equilibrium blended with Omega^s (runBlock).
+        const Lanes omega = f[o] - f[i] + solid[i] - fluid[o];
+        const Lanes partial = f[i] - relax * (f[i] - fluid[i]) + b * omega + source[i];
+        const Lanes covered = f[o] + (solid[i] - fluid[o]) + source[i];
+        const Lanes mixed = full ? covered : partial;
+        out[i] = inner ? solid[i] + source[i] : mixed;
       }
-#pragma omp simd
-      for (int l = 0; l < kLanes; ++l)
-        u2[l] = inner[l] != 0 ? (jx[l] * jx[l] + jy[l] * jy[l]) / (rho[l] * rho[l])
-                              : ux[l] * ux[l] + uy[l] * uy[l];
+      u2 = inner ? (jx * jx + jy * jy) / (rho * rho) : ux * ux + uy * uy;
     }
     if (consecutive) {
-      for (int i = 0; i < Q; ++i) {
-        double* to = ctx.dst + i * ctx.stride + at[0];
-#pragma omp simd
-        for (int l = 0; l < kLanes; ++l) to[l] = out[i][l];
-      }
+      for (int i = 0; i < Q; ++i) storeLanes(ctx.dst + i * ctx.stride + at[0], out[i]);
     } else {
       for (int i = 0; i < Q; ++i)
-#pragma omp simd
         for (int l = 0; l < kLanes; ++l) ctx.dst[i * ctx.stride + at[l]] = out[i][l];
     }
-    for (int l = 0; l < used; ++l) {
-      const Vec2 given(rho[l] * sx[l] - jx[l], rho[l] * sy[l] - jy[l]);
-      node.exchange[k0 + l] = inner[l] != 0 ? given : b[l] * given;
-      mass[l] += rho[l];
-      stats.maxU2 = u2[l] > stats.maxU2 ? u2[l] : stats.maxU2;
-    }
+    const Lanes gx = rho * sx - jx, gy = rho * sy - jy;
+    const Lanes ex2 = inner ? gx : b * gx, ey2 = inner ? gy : b * gy;
+    for (int l = 0; l < used; ++l) node.exchange[k0 + l] = Vec2(ex2[l], ey2[l]);
+    const LaneMask counted = LaneMask{0, 1, 2, 3, 4, 5, 6, 7} < used;
+    mass += counted ? rho : Lanes{};
+    maxU2 = counted && u2 > maxU2 ? u2 : maxU2;
   }
-  for (int l = 0; l < kLanes; ++l) stats.mass += mass[l];
+  for (int l = 0; l < kLanes; ++l) {
+    stats.mass += mass[l];
+    stats.maxU2 = maxU2[l] > stats.maxU2 ? maxU2[l] : stats.maxU2;
+  }
   return stats;
 }
 

@@ -414,7 +414,12 @@ void Lattice::swapCoveredCells(std::vector<CoveredCell>& cells, bool equilibrium
   // Not zeroed: the next step writes every cell's (the force sums read them
   // after it), and zeroing cost a pass over the array a step.
   covered_.exchange.resize(covered_.cells.size());
-  static_cast<FluidNode&>(*kinds_.front()).planSweep(covered_.cells, inNodeOrder);
+  covered_.ascending =
+      inNodeOrder || std::adjacent_find(covered_.cells.begin(), covered_.cells.end(),
+                                        [](const CoveredCell& a, const CoveredCell& b) {
+                                          return a.node >= b.node;
+                                        }) == covered_.cells.end();
+  static_cast<FluidNode&>(*kinds_.front()).planSweep(covered_.cells, covered_.ascending);
 }
 
 void Lattice::pulledMoments(const std::vector<CoveredCell>& cells, std::vector<double>& rho,

@@ -152,6 +152,7 @@ class CoveredNode final : public Node {
  public:
   std::vector<CoveredCell> cells;
   bool equilibriumInterior = true;
+  bool ascending = false;  // the cells' nodes ascend strictly (the coupler's list does)
   // Per cell, the momentum the last step gave the fluid (lattice units).
   mutable std::vector<Vec2> exchange;
   const char* name() const override { return "covered"; }
