@@ -120,7 +120,7 @@ StepStats Lattice::step(double machLimit) {
   if (!std::isfinite(stats.mass) || !(stats.maxU2 <= machLimit * machLimit))
     reportInstability(stats, machLimit);
   std::swap(f_, g_);
-  for (const auto& k : kinds_) k->fill(f_);
+  for (const auto& k : kinds_) k->fill(f_, threads_);
   lastMach_ = std::sqrt(stats.maxU2);
   canUndo_ = true;
   times_.bulk += std::chrono::duration<double>(t1 - t0).count();
@@ -284,7 +284,7 @@ void Lattice::initialize(const std::function<void(const Vec2&, double&, Vec2&)>&
                         "}");
       setNodeState(x, rho, u * (p_.dt / p_.h));
     }
-  for (const auto& k : kinds_) k->fill(f_);
+  for (const auto& k : kinds_) k->fill(f_, threads_);
 }
 
 void Lattice::setNodeState(std::int64_t x, double rho, const Vec2& u) {

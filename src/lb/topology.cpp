@@ -228,7 +228,7 @@ void Lattice::rebuildTopology() {
       if (holdsFluidKind(kind_[x]) && !previous.empty() && !holdsFluidKind(previous[x]))
         setNodeState(x, rho0, Vec2::Zero());
     }
-  for (const auto& k : kinds_) k->fill(f_);
+  for (const auto& k : kinds_) k->fill(f_, threads_);
 }
 
 }  // namespace sf::lb

@@ -59,7 +59,7 @@ class Node {
   virtual const char* name() const = 0;
   virtual std::size_t count() const = 0;  // nodes (or links) in the batch
   virtual StepStats streamCollide(const StepContext&) const { return {}; }
-  virtual void fill(double* /*f*/) const {}
+  virtual void fill(double* /*f*/, int /*threads*/) const {}
 };
 
 struct CoveredCell;
@@ -113,7 +113,7 @@ class LinkNode : public Node {
  public:
   std::vector<Link> links;
   std::size_t count() const override { return links.size(); }
-  void fill(double* f) const override;
+  void fill(double* f, int threads) const override;
 };
 
 class PeriodicNode final : public LinkNode {
