@@ -341,7 +341,7 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
         // A run alone: each piece its own cell.
         const Run& run = runs_[grp.run];
         const std::int32_t o = runOwner_[grp.run];
-        const std::vector<CellCover>& from = coverOf(o).cells;
+        const CellCovers& from = coverOf(o).cells;
         const std::int32_t g0 = std::int32_t(pieceStart_[o]) + run.first;
         const Motion motion = ownerMotion(o, circles);  // once for the run
         for (std::int32_t k = 0; k < run.length; ++k, ++cell, ++entry) {
@@ -495,7 +495,7 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
   for (int o = 0; o < owners; ++o) {
     Vec2 force = Vec2::Zero();
     double torque = 0, area = 0;
-    const std::vector<CellCover>& from = coverOf(o).cells;
+    const CellCovers& from = coverOf(o).cells;
     // Run by run, piece by piece: a lone run's pieces have its cells to
     // themselves (share 1), a shared run's look theirs up.
     for (std::int32_t r = runStart_[o]; r < runStart_[o + 1]; ++r) {

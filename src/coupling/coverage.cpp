@@ -32,7 +32,7 @@ double measure(const Footprint& f, const Vec2& lo, double h, int subcells) {
 // reach past it on both sides. Gives the cells, in the order and with the
 // classification, of the cell-by-cell pass.
 bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int subcells, int i0,
-                 int i1, int j0, int j1, std::vector<CellCover>& out) {
+                 int i1, int j0, int j1, CellCovers& out) {
   const int hgt = j1 - j0 + 1;
   struct Row {
     int lo = 1, hi = 0;          // touched cells, clipped to [i0, i1]; empty: lo > hi
@@ -46,9 +46,6 @@ bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int s
   eps.clear();
   const double h = g.h, ox = g.origin.x();
   auto cellLo = [&](int i) { return ox + i * h; };
-  auto arm = [&](int i, int b) -> Vec2 {
-    return g.origin + Vec2((i + 0.5) * h, (j0 + b + 0.5) * h) - reference;
-  };
   for (int b = 0; b < hgt; ++b) {
     Footprint::Band band;
     if (!f.band(g.origin.y() + (j0 + b) * h, g.origin.y() + (j0 + b + 1) * h, band)) return false;
@@ -101,26 +98,48 @@ bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int s
       while (r.oneHi < r.hi && one(r.oneHi + 1)) ++r.oneHi;
     }
   }
+  const double rx = reference.x(), ry = reference.y();
   for (int b = 0; b < hgt; ++b) {
     const Row &r = rows[b + 1], &below = rows[b], &above = rows[b + 2];
     if (r.lo > r.hi) continue;
     const int j = wrap(j0 + b, g.ny, g.periodicY);
     if (j < 0) continue;
     const bool inner = below.oneLo <= below.oneHi && above.oneLo <= above.oneHi;
-    const int innerLo = std::max({r.oneLo, below.oneLo, above.oneLo}) + 1;
-    const int innerHi = std::min({r.oneHi, below.oneHi, above.oneHi}) - 1;
-    for (int i = r.lo; i <= r.hi; ++i) {
-      const double e = eps[r.at + (i - r.lo)];
-      if (e <= 0) continue;
-      const int wi = wrap(i, g.nx, g.periodicX);
-      if (wi < 0 || !g.isOpen(wi, j)) continue;
-      // Field by field into the slot (prefetched in cover): a record built
-      // aside and copied was read back whole over its bit-field's fresh
-      // store, which the processor cannot forward (a stall a cell).
-      CellCover& c = out.emplace_back();
-      c.arm = arm(i, b), c.eps = e, c.i = wi, c.j = j;
-      c.interior = inner && i >= innerLo && i <= innerHi;
+    const int innerLo = inner ? std::max({r.oneLo, below.oneLo, above.oneLo}) + 1 : 1;
+    const int innerHi = inner ? std::min({r.oneHi, below.oneHi, above.oneHi}) - 1 : 0;
+    // The row's cells into slots taken at once (prefetched in cover) through
+    // pointers held in registers: per cell, a slot taken one at a time and
+    // the scratch ratios reached through their thread-local vector cost more
+    // than writing the record. The arm as arm(i, b) has it, component by
+    // component.
+    const double* rowEps = eps.data() + r.at - r.lo;
+    const double armY = (g.origin.y() + (j0 + b + 0.5) * h) - ry;
+    const std::size_t start = out.size();
+    out.resize(start + std::size_t(r.hi - r.lo + 1));
+    CellCover* to = out.data() + start;
+    // Most rows lie inside the lattice and wholly in open chunks: no test a cell.
+    const bool inside = r.lo >= 0 && r.hi < g.nx;
+    bool open = !g.open;
+    if (!open && g.openChunks && inside) {
+      open = true;
+      for (int k = r.lo / Grid::kOpenChunk; k <= r.hi / Grid::kOpenChunk && open; ++k)
+        open = g.openChunks[g.openChunk(k * Grid::kOpenChunk, j)] != 0;
     }
+    const bool plain = inside && open;
+    for (int i = r.lo; i <= r.hi; ++i) {
+      const double e = rowEps[i];
+      if (e <= 0) continue;
+      int wi = i;
+      if (!plain) {
+        wi = wrap(i, g.nx, g.periodicX);
+        if (wi < 0 || !g.isOpen(wi, j)) continue;
+      }
+      to->arm = Vec2((ox + (i + 0.5) * h) - rx, armY);
+      to->eps = e, to->i = wi, to->j = j;
+      to->interior = i >= innerLo && i <= innerHi;
+      ++to;
+    }
+    out.resize(std::size_t(to - out.data()));
   }
   return true;
 }
@@ -128,7 +147,7 @@ bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int s
 }  // namespace
 
 void cover(const Footprint& f, const Vec2& reference, const Grid& g, int subcells,
-           std::vector<CellCover>& out) {
+           CellCovers& out) {
   // The cells to visit, unwrapped: the footprint's box, or the whole lattice.
   int i0 = 0, i1 = g.nx - 1, j0 = 0, j1 = g.ny - 1;
   if (!f.everywhere) {

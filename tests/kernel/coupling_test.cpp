@@ -186,7 +186,7 @@ TEST(Coupling, SharedCellsMergeEveryOwnersCoverage) {
   std::vector<double> sum(n * n, 0.0);
   std::vector<int> owners(n * n, 0);
   auto add = [&](const coupling::Footprint& f, const Vec2& at) {
-    std::vector<coupling::CellCover> cells;
+    coupling::CellCovers cells;
     coupling::cover(f, at, g, coupling::kExact, cells);
     for (const coupling::CellCover& c : cells) sum[c.j * n + c.i] += c.eps, ++owners[c.j * n + c.i];
   };
@@ -265,7 +265,7 @@ TEST(Coupling, EachSolidGetsTheExchangeOfItsOwnCells) {
     coupling::Grid g;
     g.h = 1.0 / n, g.nx = g.ny = n, g.periodicX = g.periodicY = true;
     const dem::Bodies& b = m.assembly().bodies();
-    std::vector<std::vector<coupling::CellCover>> covers(b.size());
+    std::vector<coupling::CellCovers> covers(b.size());
     std::vector<double> sum(n * n, 0.0);
     std::vector<int> owners(n * n, 0);
     for (int s = 0; s < b.size(); ++s) {
@@ -274,7 +274,7 @@ TEST(Coupling, EachSolidGetsTheExchangeOfItsOwnCells) {
       for (const coupling::CellCover& c : covers[s])
         sum[c.j * n + c.i] += c.eps, ++owners[c.j * n + c.i];
     }
-    std::vector<coupling::CellCover> wall;
+    coupling::CellCovers wall;
     coupling::cover(*coupling::circleFootprint(Vec2(0.47, 0.52), 0.45, true), Vec2(0.47, 0.52), g,
                     coupling::kExact, wall);
     for (const coupling::CellCover& c : wall) sum[c.j * n + c.i] += c.eps, ++owners[c.j * n + c.i];

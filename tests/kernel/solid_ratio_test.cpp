@@ -20,6 +20,7 @@ namespace sf {
 namespace {
 
 using coupling::CellCover;
+using coupling::CellCovers;
 using coupling::Grid;
 
 constexpr double pi = std::numbers::pi;
@@ -32,7 +33,7 @@ Grid grid(int n, double h, bool periodic = false) {
   return g;
 }
 
-double coveredArea(const std::vector<CellCover>& cells, double h) {
+double coveredArea(const CellCovers& cells, double h) {
   double a = 0;
   for (const CellCover& c : cells) a += c.eps * h * h;
   return a;
@@ -180,7 +181,7 @@ TEST(SolidRatio, DiscBandAreasEqualTheClippedAreas) {
 TEST(SolidRatio, ExactCoverageSumsToTheShapeArea) {
   const double h = 0.01;
   const Grid g = grid(100, h);
-  std::vector<CellCover> cells;
+  CellCovers cells;
   coupling::cover(*coupling::circleFootprint(Vec2(0.4137, 0.5521), 0.1234, false),
                   Vec2(0.4137, 0.5521), g, coupling::kExact, cells);
   EXPECT_NEAR(coveredArea(cells, h), pi * 0.1234 * 0.1234, 1e-12);
@@ -206,11 +207,11 @@ TEST(SolidRatio, SubcellsConvergeToTheExactRatio) {
   const Grid g = grid(50, h);
   const Vec2 c(0.5011, 0.4973);
   const auto f = coupling::circleFootprint(c, 0.2037, false);
-  std::vector<CellCover> exact;
+  CellCovers exact;
   coupling::cover(*f, c, g, coupling::kExact, exact);
   double previous = 1e300;
   for (int n : {1, 2, 4, 8}) {
-    std::vector<CellCover> cells;
+    CellCovers cells;
     coupling::cover(*f, c, g, n, cells);
     // Same cells (the cull does not depend on n), ratios approach the exact ones.
     double err = 0;
@@ -235,7 +236,7 @@ TEST(SolidRatio, InteriorCellsHaveFullyCoveredNeighbours) {
   const double h = 0.01;
   const Grid g = grid(100, h);
   const Vec2 c(0.5, 0.5);
-  std::vector<CellCover> cells;
+  CellCovers cells;
   coupling::cover(*coupling::circleFootprint(c, 0.2, false), c, g, coupling::kExact, cells);
   std::vector<double> eps(100 * 100, 0.0);
   for (const CellCover& k : cells) eps[k.j * 100 + k.i] = k.eps;
@@ -257,7 +258,7 @@ TEST(SolidRatio, PeriodicEdgesWrapAndWallsCut) {
   const double h = 0.01;
   const Vec2 c(0.98, 0.02);  // overlaps the right and bottom edges
   const double r = 0.1;
-  std::vector<CellCover> cells;
+  CellCovers cells;
   coupling::cover(*coupling::circleFootprint(c, r, false), c, grid(100, h, true), coupling::kExact,
                   cells);
   EXPECT_NEAR(coveredArea(cells, h), pi * r * r, 1e-12);
@@ -278,7 +279,7 @@ TEST(SolidRatio, ContainerCoversTheOutsideAtTheNearestImage) {
   const Grid g = grid(50, h, true);
   const double r = 0.3;
   for (const Vec2& c : {Vec2(0.5, 0.5), Vec2(0.93, 0.08)}) {
-    std::vector<CellCover> cells;
+    CellCovers cells;
     coupling::cover(*coupling::circleFootprint(c, r, true), c, g, coupling::kExact, cells);
     EXPECT_NEAR(coveredArea(cells, h), 1.0 - pi * r * r, 1e-12) << c.transpose();
     for (const CellCover& k : cells) EXPECT_GE(k.arm.norm(), r - h);
@@ -303,7 +304,7 @@ TEST(SolidRatio, ChunkMaskLeavesOutExactlyTheClosedCells) {
   const auto disc = coupling::circleFootprint(Vec2(96.3, 74.6), 40.2, false);
   const auto container = coupling::circleFootprint(Vec2(75.1, 75.3), 60.7, true);
   for (const coupling::Footprint* f : {disc.get(), container.get()}) {
-    std::vector<CellCover> perCell, chunked;
+    CellCovers perCell, chunked;
     g.openChunks = nullptr;
     coupling::cover(*f, Vec2(96.3, 74.6), g, coupling::kExact, perCell);
     g.openChunks = chunks.data();
@@ -318,7 +319,7 @@ TEST(SolidRatio, ChunkMaskLeavesOutExactlyTheClosedCells) {
     }
     // Closed cells were there to drop: without the mask there are more.
     g.open = nullptr;
-    std::vector<CellCover> all;
+    CellCovers all;
     coupling::cover(*f, Vec2(96.3, 74.6), g, coupling::kExact, all);
     g.open = open.data();
     for (const CellCover& c : all) dropped += !open[std::size_t(c.j) * n + c.i];
@@ -361,7 +362,7 @@ TEST(SolidRatio, RowByRowPassEqualsTheCellByCellPass) {
                    : shape == 1 ? coupling::footprintOf(square, at, t % 8 == 1 ? 0.0 : 6.3 * u(rng))
                                 : coupling::circleFootprint(at, h * (0.3 + 12 * u(rng)), false);
     for (int n : {coupling::kExact, 1, 4}) {
-      std::vector<CellCover> rows, cells;
+      CellCovers rows, cells;
       coupling::cover(*f, at, g, n, rows);
       coupling::cover(CellByCell(*f), at, g, n, cells);
       ASSERT_EQ(rows.size(), cells.size()) << t << " " << n;

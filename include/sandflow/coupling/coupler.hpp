@@ -74,7 +74,7 @@ class Coupler {
     Vec2 x = Vec2::Zero();
     double angle = 0, area = 0, reach = 0, radius = 0;
     bool outside = false;
-    std::vector<CellCover> cells;
+    CellCovers cells;
     std::vector<Run> runs;
   };
   // A piece is one solid's share of one cell: its global index g numbers the

@@ -4,6 +4,9 @@
 // without any area work (the cull); only cells the outline may cross are
 // measured, exactly or by n x n subcell centres.
 #include <cstdint>
+#include <memory>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "sandflow/coupling/footprint.hpp"
@@ -51,10 +54,32 @@ struct CellCover {
 };
 static_assert(sizeof(CellCover) == 32);
 
+// Storage whose new records are left unset, not zeroed: the pass writes each
+// record whole right after taking its slot.
+template <class T>
+struct UnsetAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = UnsetAllocator<U>;
+  };
+  UnsetAllocator() = default;
+  template <class U>
+  UnsetAllocator(const UnsetAllocator<U>&) noexcept {}
+  template <class U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+using CellCovers = std::vector<CellCover, UnsetAllocator<CellCover>>;
+
 // Appends the cells that `f` covers. `reference` is the point arms are measured
 // from (the element's centre). Periodic axes wrap; cells beyond a non-periodic
 // edge are dropped.
 void cover(const Footprint& f, const Vec2& reference, const Grid& grid, int subcells,
-           std::vector<CellCover>& out);
+           CellCovers& out);
 
 }  // namespace sf::coupling
