@@ -108,7 +108,7 @@ DiscBand::DiscBand(const Vec2& c, double r, double y0, double y1) : cx_(c.x()), 
   below_ = clamped(-p1, -p0);
 }
 
-double DiscBand::s(double t) const {
+[[gnu::always_inline]] inline double DiscBand::s(double t) const {
   return std::sqrt(std::max(0.0, (r_ - t) * (r_ + t)));
 }
 
@@ -122,7 +122,7 @@ DiscBand::Clamped DiscBand::clamped(double lo, double hi) const {
 // (q s_q - p s_p + r^2 (asin(q/r) - asin(p/r))) / 2, each difference written
 // as (q - p) times a well-conditioned factor: no cancellation however close
 // p and q are, or however large the disc is against the cell.
-double DiscBand::arc(double p, double q, double sp, double sq) const {
+[[gnu::always_inline]] inline double DiscBand::arc(double p, double q, double sp, double sq) const {
   if (!(q > p)) return 0.0;
   const double d = q - p, sum = sp + sq;
   if (!(sum > 0)) return 0.0;             // p = q = +-r
@@ -132,7 +132,8 @@ double DiscBand::arc(double p, double q, double sp, double sq) const {
   return 0.5 * (chord + r_ * r_ * angle);
 }
 
-double DiscBand::part(const Clamped& c, double a, double b, double sa, double sb) const {
+[[gnu::always_inline]] inline double DiscBand::part(const Clamped& c, double a, double b, double sa,
+                                                    double sb) const {
   if (c.hi <= 0) return c.hi * (b - a);
   if (c.lo >= r_) return c.lo * (b - a);
   auto overlap = [&](double lo, double hi) {
