@@ -354,14 +354,22 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
             pieceCell_[g0 + k] = cell;
             epsSum_[cell] = p.eps;
           }
-          cells[cell] = {std::int32_t(run.node + k), bool(p.interior), std::min(1.0, p.eps), 0.0,
-                         0.0};
+          // Field by field, each once (as a whole the record was built on
+          // the stack and copied; zeroed, then given its velocity, it took
+          // two stores more).
+          lb::CoveredCell& to = cells[cell];
+          const bool interior = p.interior;
+          to.node = std::int32_t(run.node + k), to.interior = interior;
+          to.eps = std::min(1.0, p.eps);
           if (blendNow) {
             const Vec2 v = motion.v + spin(motion.w, p.arm);
             // cellVelocity's sum for one piece: its weight eps / eps is 1 exactly.
-            const Vec2 u(0 + toLattice * v.x(), 0 + toLattice * v.y());
-            cells[cell].ux = u.x(), cells[cell].uy = u.y();
-            if (!p.interior && u.squaredNorm() > best.u2) best = {u.squaredNorm(), o};
+            const double ux = 0 + toLattice * v.x(), uy = 0 + toLattice * v.y();
+            to.ux = ux, to.uy = uy;
+            const double u2 = ux * ux + uy * uy;
+            if (!interior && u2 > best.u2) best = {u2, o};
+          } else {
+            to.ux = 0.0, to.uy = 0.0;
           }
         }
         continue;
