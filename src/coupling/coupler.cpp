@@ -510,11 +510,14 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
       // The records and exchanges of a run ahead: the lattice's sweep has
       // evicted both since they were written.
       constexpr std::int32_t kAhead = 4;  // runs
-      if (r + kAhead < runStart_[o + 1]) {
-        const Run& next = runs_[r + kAhead];
-        prefetchForRead(from.data() + next.first, std::size_t(next.length) * sizeof(CellCover));
-        if (runCell_[r + kAhead] >= 0)
-          prefetchForRead(exchange.data() + runCell_[r + kAhead],
+      // (Into the next owners' runs too: the runs lie owner after owner, and
+      // an owner's first runs would otherwise wait.)
+      if (const std::size_t ahead = std::size_t(r + kAhead); ahead < runs_.size()) {
+        const Run& next = runs_[ahead];
+        prefetchForRead(coverOf(runOwner_[ahead]).cells.data() + next.first,
+                        std::size_t(next.length) * sizeof(CellCover));
+        if (runCell_[ahead] >= 0)
+          prefetchForRead(exchange.data() + runCell_[ahead],
                           std::size_t(next.length) * sizeof(Vec2));
       }
       const Run& run = runs_[r];
