@@ -83,13 +83,16 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   auto measure = [&](Cached& c, const Footprint& f, const Vec2& reference) {
     cover(f, reference, grid, settings.subcells, c.cells);
     c.runs.clear();
-    std::uint32_t last = 0;
-    for (std::size_t m = 0; m < c.cells.size(); ++m) {
+    // Consecutive nodes are the next cell of the same row (a row's last cell
+    // and the next row's first have the padding between them).
+    const std::size_t count = c.cells.size();
+    for (std::size_t m = 0, end; m < count; m = end) {
+      const int i = c.cells[m].i, j = c.cells[m].j;
+      for (end = m + 1; end < count && c.cells[end].j == j && c.cells[end].i == i + int(end - m);)
+        ++end;
       // Nodes fit 32 bits (the lattice's size limit is far below).
-      const auto node = std::uint32_t(lattice.nodeIndex(c.cells[m].i, c.cells[m].j));
-      if (m == 0 || node != last + 1) c.runs.push_back({node, std::int32_t(m), 0});
-      ++c.runs.back().length;
-      last = node;
+      c.runs.push_back(
+          {std::uint32_t(lattice.nodeIndex(i, j)), std::int32_t(m), std::int32_t(end - m)});
     }
   };
 #pragma omp parallel for schedule(dynamic, 4) num_threads(threads) if (n >= 16)
