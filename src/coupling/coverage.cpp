@@ -110,9 +110,10 @@ bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int s
     // The row's cells into slots taken at once (prefetched in cover) through
     // pointers held in registers: per cell, a slot taken one at a time and
     // the scratch ratios reached through their thread-local vector cost more
-    // than writing the record. The arm as arm(i, b) has it, component by
-    // component.
-    const double* rowEps = eps.data() + r.at - r.lo;
+    // than writing the record. The arm, the cell's centre less the reference
+    // point, is worked out component by component as the cell-by-cell pass
+    // has it.
+    const double* rowEps = eps.data() + r.at;
     const double armY = (g.origin.y() + (j0 + b + 0.5) * h) - ry;
     const std::size_t start = out.size();
     out.resize(start + std::size_t(r.hi - r.lo + 1));
@@ -127,7 +128,7 @@ bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int s
     }
     const bool plain = inside && open;
     for (int i = r.lo; i <= r.hi; ++i) {
-      const double e = rowEps[i];
+      const double e = rowEps[i - r.lo];
       if (e <= 0) continue;
       int wi = i;
       if (!plain) {
