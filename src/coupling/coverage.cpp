@@ -119,14 +119,7 @@ bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int s
     out.resize(start + std::size_t(r.hi - r.lo + 1));
     CellCover* to = out.data() + start;
     // Most rows lie inside the lattice and wholly in open chunks: no test a cell.
-    const bool inside = r.lo >= 0 && r.hi < g.nx;
-    bool open = !g.open;
-    if (!open && g.openChunks && inside) {
-      open = true;
-      for (int k = r.lo / Grid::kOpenChunk; k <= r.hi / Grid::kOpenChunk && open; ++k)
-        open = g.openChunks[g.openChunk(k * Grid::kOpenChunk, j)] != 0;
-    }
-    const bool plain = inside && open;
+    const bool plain = r.lo >= 0 && r.hi < g.nx && g.rowOpen(r.lo, r.hi, j);
     for (int i = r.lo; i <= r.hi; ++i) {
       const double e = rowEps[i - r.lo];
       if (e <= 0) continue;

@@ -151,11 +151,14 @@ DiscBand::Clamped DiscBand::clamped(double lo, double hi) const {
   return sum;
 }
 
+[[gnu::always_inline]] inline double DiscBand::between(double a, double b, double sa,
+                                                       double sb) const {
+  return b > a ? std::max(0.0, part(above_, a, b, sa, sb) + part(below_, a, b, sa, sb)) : 0.0;
+}
+
 double DiscBand::area(double xa, double xb) const {
   const double a = std::clamp(xa - cx_, -r_, r_), b = std::clamp(xb - cx_, -r_, r_);
-  if (!(b > a)) return 0.0;
-  const double sa = s(a), sb = s(b);
-  return std::max(0.0, part(above_, a, b, sa, sb) + part(below_, a, b, sa, sb));
+  return between(a, b, s(a), s(b));
 }
 
 void DiscBand::areas(double x0, double h, int first, int last, double* out) const {
@@ -163,8 +166,7 @@ void DiscBand::areas(double x0, double h, int first, int last, double* out) cons
   double a = std::clamp(x0 + first * h - cx_, -r_, r_), sa = s(a);
   for (int i = first; i <= last; ++i) {
     const double b = std::clamp(x0 + (i + 1) * h - cx_, -r_, r_), sb = s(b);
-    out[i - first] =
-        b > a ? std::max(0.0, part(above_, a, b, sa, sb) + part(below_, a, b, sa, sb)) : 0.0;
+    out[i - first] = between(a, b, sa, sb);
     a = b, sa = sb;
   }
 }

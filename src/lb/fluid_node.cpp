@@ -132,14 +132,11 @@ std::size_t FluidNode::count() const {
   return n;
 }
 
-void FluidNode::planSweep(const std::vector<CoveredCell>& cells, bool inNodeOrder) {
+void FluidNode::planSweep(const std::vector<CoveredCell>& cells, bool ascending) {
   blocks_.clear();
   blockCells_ = 0;
   const std::size_t n = cells.size();
-  bool sorted = true;
-  for (std::size_t k = 1; k < n && sorted && !inNodeOrder; ++k)
-    sorted = cells[k - 1].node < cells[k].node;
-  if (n == 0 || !sorted || spans.empty()) return;
+  if (n == 0 || !ascending || spans.empty()) return;
   // Blocks of about kSweepNodes nodes, cut where a span starts, and the cells
   // in each (those before the next block's first span). A block's sources and
   // destinations (4096 x 9 x 8 B each, 590 KB) stay in a 1 MB L2 for its

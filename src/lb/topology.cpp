@@ -218,7 +218,8 @@ void Lattice::rebuildTopology() {
   if (!bounce->links.empty()) kinds_.push_back(std::move(bounce));
   if (!slip->links.empty()) kinds_.push_back(std::move(slip));
   if (solid->nodes) kinds_.push_back(std::move(solid));
-  static_cast<FluidNode&>(*kinds_.front()).planSweep(covered_.cells);  // until the next step's list
+  // Until the next step's list.
+  static_cast<FluidNode&>(*kinds_.front()).planSweep(covered_.cells, covered_.ascending);
 
   // Nodes that start to hold fluid begin at rest at the reference density.
   kind_ = std::move(kind);

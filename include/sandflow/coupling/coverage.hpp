@@ -38,6 +38,15 @@ struct Grid {
     if (openChunks && openChunks[openChunk(i, j)]) return true;
     return open[std::size_t(j) * nx + i] != 0;
   }
+  // True when the chunks alone show cells lo..hi of row j (inside the
+  // lattice) all open; false when some may not be.
+  bool rowOpen(int lo, int hi, int j) const {
+    if (!open) return true;
+    if (!openChunks) return false;
+    for (int i = lo / kOpenChunk * kOpenChunk; i <= hi; i += kOpenChunk)
+      if (!openChunks[openChunk(i, j)]) return false;
+    return true;
+  }
 };
 
 // How a solid-ratio is measured: subcells 0 means exact areas, else the count

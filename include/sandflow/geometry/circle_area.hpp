@@ -36,6 +36,8 @@ class DiscBand {
   Clamped clamped(double lo, double hi) const;
   // sa, sb: s at a and b.
   double part(const Clamped& c, double a, double b, double sa, double sb) const;
+  // The area over a <= t <= b (in the disc's frame, clamped to [-r, r]).
+  double between(double a, double b, double sa, double sb) const;
   // Integral of s over [p, q], one side of the centre, s known at both ends.
   double arc(double p, double q, double sp, double sq) const;
   double s(double t) const;

@@ -83,8 +83,8 @@ class FluidNode final : public Node {
   StepStats streamCollide(const StepContext& ctx) const override;
   // Notes where the covered cells fall among the spans, for the sweep; cells
   // out of node order get no sweep (their pass runs after the bulk).
-  // `inNodeOrder`: known to ascend strictly, not checked.
-  void planSweep(const std::vector<CoveredCell>& cells, bool inNodeOrder = false);
+  // `ascending`: whether their nodes ascend strictly (CoveredNode::ascending).
+  void planSweep(const std::vector<CoveredCell>& cells, bool ascending);
   // True when the cells last planned for can run in the bulk's sweep.
   bool sweepsWith(const CoveredNode& covered) const;
   // The bulk and the covered cells block by block: each block's spans whole,
