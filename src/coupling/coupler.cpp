@@ -324,9 +324,11 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
   const std::int32_t owners = std::int32_t(pieceStart_.size()) - 1;
   for (std::int32_t o = 0; o < owners && indexAll; ++o)
     std::fill(pieceOwner_.begin() + pieceStart_[o], pieceOwner_.begin() + pieceStart_[o + 1], o);
-  const std::ptrdiff_t tasks = std::max<std::ptrdiff_t>(1, std::ptrdiff_t(total) / kChunk);
+  // Tasks of a quarter chunk, taken as threads come free: the cores of a
+  // shared machine do not keep the same speed (fluid_node.cpp's sweep).
+  const std::ptrdiff_t tasks = std::max<std::ptrdiff_t>(1, std::ptrdiff_t(total) / (kChunk / 4));
   chunkFastest_.assign(tasks, Fastest{});
-#pragma omp parallel for schedule(static) num_threads(threads_) if (tasks > 1)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads_) if (tasks > 1)
   for (std::ptrdiff_t t = 0; t < tasks; ++t) {
     Fastest best;
     const std::ptrdiff_t qEnd = groups * (t + 1) / tasks;

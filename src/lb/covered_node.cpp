@@ -241,7 +241,8 @@ StepStats CoveredNode::streamCollide(const StepContext& ctx) const {
   const std::ptrdiff_t n = std::ptrdiff_t(cells.size());
   const std::ptrdiff_t blocks = (n + kBlock - 1) / kBlock;
   std::vector<StepStats> partial(blocks);
-#pragma omp parallel for schedule(static) num_threads(ctx.threads) if (n >= kParallelNodes)
+  // Blocks taken as threads come free (the sweep's reason, fluid_node.cpp).
+#pragma omp parallel for schedule(dynamic, 4) num_threads(ctx.threads) if (n >= kParallelNodes)
   for (std::ptrdiff_t b = 0; b < blocks; ++b)
     partial[b] = run(ctx, b * kBlock, std::min(n, (b + 1) * kBlock));
   StepStats total;

@@ -15,6 +15,10 @@ namespace {
 
 using d2q9::Q;
 
+// Nodes a thread takes at a time from the spans (a few rows): whole rows keep
+// the hardware's prefetch streams long; far fewer grabs than spans.
+constexpr std::ptrdiff_t kGrabNodes = 4096;
+
 template <Collision C, ForceScheme S>
 SF_KERNEL_CLONES StepStats runSpan(const StepContext& ctx, std::ptrdiff_t first, std::ptrdiff_t n) {
   const double* __restrict s[Q];
@@ -72,7 +76,11 @@ StepStats runSpans(const StepContext& ctx, const std::vector<FluidNode::Span>& s
   // Small lattices stay on one thread: a parallel region costs more than it saves.
   std::ptrdiff_t nodes = 0;
   for (const FluidNode::Span& s : spans) nodes += s.length;
-#pragma omp parallel for schedule(static) num_threads(ctx.threads) if (nodes >= kParallelNodes)
+  // Spans handed out a few rows at a time as threads come free (see sweep).
+  const int grab =
+      int(std::max<std::ptrdiff_t>(1, kGrabNodes * n / std::max<std::ptrdiff_t>(1, nodes)));
+#pragma omp parallel for schedule(dynamic, grab) \
+    num_threads(ctx.threads) if (nodes >= kParallelNodes)
   for (std::ptrdiff_t k = 0; k < n; ++k)
     partial[k] = runSpan<C, S>(ctx, spans[k].first, spans[k].length);
   StepStats total;
@@ -94,7 +102,12 @@ StepStats sweep(const StepContext& ctx, const std::vector<FluidNode::Span>& span
   for (const FluidNode::Span& s : spans) nodes += s.length;
   covered.exchange.resize(covered.cells.size());
   const bool parallel = nodes >= kParallelNodes;
-#pragma omp parallel for schedule(static) num_threads(ctx.threads) if (parallel)
+  // Blocks handed out one at a time as threads come free: the cores of a
+  // shared machine do not keep the same speed, and with halves fixed in
+  // advance one of two threads sat idle for 0.9 ms of a 6 ms sweep (AMD EPYC,
+  // 1024^2 coupled scene; 0.75 ms of a 4.2 ms fluid-only step). Each block
+  // is done whole by one thread, so the results do not change.
+#pragma omp parallel for schedule(dynamic, 1) num_threads(ctx.threads) if (parallel)
   for (std::ptrdiff_t b = 0; b < n; ++b) {
     const std::int32_t span0 = b == 0 ? 0 : blocks[b - 1].spanEnd;
     const std::int32_t cell0 = b == 0 ? 0 : blocks[b - 1].cellEnd;
