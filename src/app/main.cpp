@@ -2,6 +2,8 @@
 //   sandflow                  interactive Tcl prompt with the sandflow commands
 //   sandflow script.tcl ...   runs the script headless; argv/argc as in tclsh
 //   sandflow -c 'commands' ...  runs the commands and prints a non-empty result
+//   sandflow -gui ?script.tcl? ?arg ...?  the workbench (Tk, loaded only here),
+//                             the script sourced into it once the window is up
 #include <tcl.h>
 
 #include <cstdio>
@@ -47,6 +49,52 @@ int runCommands(const char* argv0, const char* commands, int argc, char** argv) 
   return code == TCL_OK ? 0 : 1;
 }
 
+// Where the workbench's Tcl sources are: $SANDFLOW_GUI_DIR, the source tree
+// this program was built from, or beside an installed program.
+constexpr const char* kFindGui = R"tcl(
+  set ::sf::gui::library ""
+  foreach dir [list [expr {[info exists ::env(SANDFLOW_GUI_DIR)] ? $::env(SANDFLOW_GUI_DIR) : ""}] \
+                   $::sf::gui::builtFrom \
+                   [file join [file dirname [file dirname [info nameofexecutable]]] share sandflow gui]] {
+    if {$dir ne "" && [file exists [file join $dir main.tcl]]} {
+      set ::sf::gui::library $dir
+      break
+    }
+  }
+  if {$::sf::gui::library eq ""} { error "the workbench's Tcl files (gui/main.tcl) were not found" }
+  source [file join $::sf::gui::library main.tcl]
+)tcl";
+
+// The workbench: Tk is loaded into this interpreter only here, so headless runs
+// load neither Tk nor X. Returns when the main window is closed.
+int runGui(const char* argv0, int argc, char** argv) {
+  Tcl_Interp* interp = Tcl_CreateInterp();
+  // As for a headless script: argv0 is the script, argv its arguments.
+  const bool hasScript = argc >= 1;
+  setArgv(interp, hasScript ? argv[0] : argv0, hasScript ? argc - 1 : 0, argv + (hasScript ? 1 : 0));
+  int code = appInit(interp);
+  if (code == TCL_OK) {
+    Tcl_Eval(interp, "namespace eval ::sf::gui {}");
+    Tcl_SetVar(interp, "::sf::gui::builtFrom", SANDFLOW_GUI_DIR, TCL_GLOBAL_ONLY);
+    code = Tcl_Eval(interp, kFindGui);
+  }
+  if (code == TCL_OK) {
+    Tcl_Obj* cmd = Tcl_NewListObj(0, nullptr);
+    Tcl_ListObjAppendElement(nullptr, cmd, Tcl_NewStringObj("::sf::gui::main", -1));
+    if (hasScript) Tcl_ListObjAppendElement(nullptr, cmd, Tcl_NewStringObj(argv[0], -1));
+    Tcl_IncrRefCount(cmd);
+    code = Tcl_EvalObjEx(interp, cmd, TCL_EVAL_GLOBAL);
+    Tcl_DecrRefCount(cmd);
+  }
+  if (code == TCL_OK) code = Tcl_Eval(interp, "if {[winfo exists .]} {tkwait window .}");
+  if (code != TCL_OK) {
+    const char* info = Tcl_GetVar(interp, "errorInfo", TCL_GLOBAL_ONLY);
+    std::fprintf(stderr, "%s\n", info ? info : Tcl_GetStringResult(interp));
+  }
+  Tcl_Eval(interp, code == TCL_OK ? "exit 0" : "exit 1");  // exit handlers finish the recordings
+  return code == TCL_OK ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -58,6 +106,7 @@ int main(int argc, char** argv) {
     }
     return runCommands(argv[0], argv[2], argc - 3, argv + 3);
   }
+  if (argc >= 2 && std::strcmp(argv[1], "-gui") == 0) return runGui(argv[0], argc - 2, argv + 2);
   Tcl_Main(argc, argv, appInit);
   return 0;
 }

@@ -105,7 +105,7 @@ bool renderEgl(const DrawList& list, Image& out, std::string& error) {
   return true;
 }
 
-const OffscreenApi api{kOffscreenApiVersion, "egl", renderEgl};
+const OffscreenApi api{kOffscreenApiVersion, "egl", renderEgl, drawList};
 
 }  // namespace
 }  // namespace sf::render

@@ -40,7 +40,7 @@ bool renderOsmesa(const DrawList& list, Image& out, std::string& error) {
   return true;
 }
 
-const OffscreenApi api{kOffscreenApiVersion, "osmesa", renderOsmesa};
+const OffscreenApi api{kOffscreenApiVersion, "osmesa", renderOsmesa, nullptr};
 
 }  // namespace
 }  // namespace sf::render

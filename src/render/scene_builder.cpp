@@ -304,6 +304,7 @@ DrawList buildScene(const sim::Manager& m, const ViewOptions& v, int scale) {
   world.px0 *= f;
   world.py0 *= f;
   world.pixelsPerUnit *= f;
+  list.world = {world.wx0, world.wy0, world.px0, world.py0, world.pixelsPerUnit};
 
   if (m.hasLattice() && field != Field::none) {
     list.hasField = true;

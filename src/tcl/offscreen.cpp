@@ -107,15 +107,28 @@ std::string loadedOffscreen() {
   return api ? api->name : "";
 }
 
-render::Image takePicture(const sim::Manager& m, const render::ViewOptions& v) {
-  const render::DrawList list = render::buildScene(m, v, kSupersample);
+render::Image renderOffscreen(const render::DrawList& list) {
   const render::OffscreenApi& b = backEnd();
-  render::Image big;
+  render::Image image;
   std::string error;
   std::lock_guard lock(renderMutex);
-  if (!b.render(list, big, error)) throw Error("RESOURCE OFFSCREEN", error);
+  if (!b.render(list, image, error)) throw Error("RESOURCE OFFSCREEN", error);
+  return image;
+}
+
+render::Image takePicture(const sim::Manager& m, const render::ViewOptions& v) {
   static_assert(kSupersample == 2, "render::halve averages 2 x 2 blocks");
-  return render::halve(big);
+  return render::halve(renderOffscreen(render::buildScene(m, v, kSupersample)));
+}
+
+void drawIntoCurrentContext(const render::DrawList& list) {
+  const render::OffscreenApi& b = backEnd();
+  if (!b.drawCurrent)
+    throw Error("RESOURCE OFFSCREEN", std::string("the ") + b.name +
+                                          " back end cannot draw into the view's OpenGL context "
+                                          "(the workbench draws with egl)");
+  std::lock_guard lock(renderMutex);
+  b.drawCurrent(list);
 }
 
 }  // namespace sf::tcl

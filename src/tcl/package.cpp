@@ -82,6 +82,7 @@ extern "C" int Sandflow_Init(Tcl_Interp* interp) {
   registerViewCommands(interp, session);
   registerRecordCommand(interp, session);
   registerPlotCommand(interp, session);
+  registerGuiCommands(interp, session);
   if (Tcl_Eval(interp, kWarnProc) != TCL_OK) return TCL_ERROR;
   return Tcl_PkgProvide(interp, "sandflow", SANDFLOW_VERSION);
 }

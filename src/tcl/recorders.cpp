@@ -45,6 +45,7 @@ std::string Recorder::samePath(const std::string& path) {
 
 Session::~Session() {
   for (auto& r : recorders) finishQuietly(*r);
+  if (runTick) Tcl_DecrRefCount(runTick);
 }
 
 bool recording(const Session& s, const std::string& path) {

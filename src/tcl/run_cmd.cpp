@@ -27,8 +27,35 @@ int advance(Session& s) {
   return recordStep(s);
 }
 
+// A run's tick (the workbench's ::sf::gui::runtick) may serve a click that
+// asks for another run or step: refused, the run in progress goes on.
+int refuseWhileRunning(const Session& s) {
+  if (!s.running) return TCL_OK;
+  return fail(s.interp, "BUSY RUN",
+              "a run is in progress (step " + std::to_string(s.manager.stepCount()) +
+                  "): pause it first");
+}
+
+// Clears Session::running however the run ends.
+struct RunningFlag {
+  Session& s;
+  explicit RunningFlag(Session& session) : s(session) { s.running = true; }
+  ~RunningFlag() { s.running = false; }
+};
+
+// Evaluates the tick script; TCL_BREAK asks the run to pause.
+int tick(Session& s) {
+  Tcl_Obj* script = s.runTick;
+  Tcl_IncrRefCount(script);  // the tick may replace itself
+  const int code = Tcl_EvalObjEx(s.interp, script, TCL_EVAL_GLOBAL);
+  Tcl_DecrRefCount(script);
+  if (code == TCL_ERROR) Tcl_AddErrorInfo(s.interp, "\n    (in the workbench's run tick)");
+  return code;
+}
+
 int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   Session& s = sessionOf(data);
+  if (refuseWhileRunning(s) != TCL_OK) return TCL_ERROR;
   if (objc != 2 && objc != 5) {
     Tcl_WrongNumArgs(interp, 1, objv, "N ?-every K script?");
     return TCL_ERROR;
@@ -45,10 +72,25 @@ int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   }
   double computeSeconds = 0.0;
   Tcl_WideInt done = 0;
+  RunningFlag running(s);
+  s.runTotal = steps;
+  using Clock = std::chrono::steady_clock;
+  auto lastTick = Clock::now();
   for (; done < steps; ++done) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = Clock::now();
+    s.runDone = done;
+    if (s.runTick && t0 - lastTick >= std::chrono::milliseconds(s.runTickMs)) {
+      const int code = tick(s);
+      lastTick = Clock::now();
+      if (code == TCL_BREAK) {  // paused: the step reached is the result
+        Tcl_SetObjResult(interp, Tcl_NewWideIntObj(s.manager.stepCount()));
+        return TCL_OK;
+      }
+      if (code != TCL_OK) return code;
+    }
+    const auto t1 = Clock::now();
     if (advance(s) != TCL_OK) return TCL_ERROR;
-    computeSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    computeSeconds += std::chrono::duration<double>(Clock::now() - t1).count();
     if (s.manager.hasLattice())  // the rate so far, so that -every scripts can report it
       s.manager.setMlups(double(s.manager.lattice().nodes()) * double(done + 1) / computeSeconds /
                          1e6);
@@ -76,6 +118,7 @@ int Step(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
+  if (refuseWhileRunning(sessionOf(data)) != TCL_OK) return TCL_ERROR;
   return advance(sessionOf(data));
 }
 
@@ -86,6 +129,7 @@ int Reset(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) 
   }
   // Output of the old scene ends with it.
   Session& s = sessionOf(data);
+  if (refuseWhileRunning(s) != TCL_OK) return TCL_ERROR;
   const int code = closeRecorders(s, nullptr);
   s.manager.reset();
   return code;

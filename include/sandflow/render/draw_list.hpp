@@ -44,8 +44,15 @@ struct Rect {
   float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
 
+// How world coordinates map to the list's pixels: world (wx0, wy0) lands on
+// pixel (px0, py0), origin bottom-left. The GUI view picks with it.
+struct WorldWindow {
+  double wx0 = 0, wy0 = 0, px0 = 0, py0 = 0, pixelsPerUnit = 1;
+};
+
 struct DrawList {
   int width = 0, height = 0;  // pixels
+  WorldWindow world;
   Rgba background{255, 255, 255, 255};
   // The world window's viewport: the field, fills and world strokes are clipped to it.
   Rect viewport;

@@ -17,9 +17,14 @@ struct OffscreenApi {
   // Draws the list into a buffer of list.width x list.height pixels and reads it
   // back into `out` (rows top-down). False, with `error` set, on failure.
   bool (*render)(const DrawList& list, Image& out, std::string& error);
+  // Draws the list into the context current on this thread (the workbench's
+  // Togl view, made current by Togl): null where the module's OpenGL library
+  // cannot draw into another library's context (OSMesa). With GLVND, the EGL
+  // module's libOpenGL dispatches to a GLX context as well.
+  void (*drawCurrent)(const DrawList& list);
 };
 
-inline constexpr int kOffscreenApiVersion = 1;
+inline constexpr int kOffscreenApiVersion = 2;
 
 // An OpenGL buffer (rows bottom-up) as an image (rows top-down).
 inline void imageFromBuffer(const std::vector<std::uint8_t>& buffer, int width, int height,

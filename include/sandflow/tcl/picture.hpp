@@ -31,7 +31,14 @@ std::string offscreenChoice();
 void setOffscreenChoice(const std::string& choice);  // throws sf::Error once loaded
 std::string loadedOffscreen();                       // "" until a picture is taken
 
+// A draw list drawn off-screen, read back as it is. Throws sf::Error.
+render::Image renderOffscreen(const render::DrawList& list);
 // The scene under `v`, drawn off-screen (2x supersampled). Throws sf::Error.
 render::Image takePicture(const sim::Manager& m, const render::ViewOptions& v);
+
+// A draw list drawn into the OpenGL context current on this thread (the
+// workbench's view). Throws sf::Error, also when the loaded module cannot draw
+// into another library's context (OSMesa).
+void drawIntoCurrentContext(const render::DrawList& list);
 
 }  // namespace sf::tcl

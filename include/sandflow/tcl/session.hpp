@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "sandflow/render/draw_list.hpp"
 #include "sandflow/render/view_options.hpp"
 #include "sandflow/sim/manager.hpp"
 
@@ -52,6 +53,16 @@ struct Session {
   sim::Manager manager;
   std::vector<std::unique_ptr<Recorder>> recorders;
   render::ViewOptions view;  // what the view and snapshots show (view configure)
+  // The workbench's hook into `run` (::sf::gui::runtick): a script evaluated at
+  // most every runTickMs milliseconds of a run, which serves the GUI's events
+  // and redraws; `break` from it pauses the run.
+  Tcl_Obj* runTick = nullptr;
+  int runTickMs = 50;
+  bool running = false;  // a run is in progress (its tick may run other commands)
+  long long runDone = 0, runTotal = 0;  // the run's progress, for the GUI's bar
+  // The workbench view's last picture without its overlay (rubber bands, the
+  // selection), so that a drag redraws only what moves.
+  std::unique_ptr<render::DrawList> viewList;
   ~Session();
 };
 
@@ -81,6 +92,7 @@ void registerSourceCommands(Tcl_Interp* interp, Session* session);
 void registerViewCommands(Tcl_Interp* interp, Session* session);
 void registerRecordCommand(Tcl_Interp* interp, Session* session);
 void registerPlotCommand(Tcl_Interp* interp, Session* session);
+void registerGuiCommands(Tcl_Interp* interp, Session* session);
 
 }  // namespace sf::tcl
 

@@ -1,0 +1,186 @@
+# The property panel: the options of the selected element, or of the lattice,
+# `sim`, the view or a material, as `configure` reports them, each editable.
+# An edit is the `configure` command a user could type, with the same
+# validation; a refused value leaves the scene unchanged and the message
+# stands beside the field.
+
+namespace eval ::sf::gui::props {
+    variable f ""
+    variable target sim         ;# what is shown: sim, lattice, view, element ID, material NAME
+    variable values             ;# option -> value in the entry
+    variable shown              ;# option -> value the scene had when shown
+    variable errors             ;# option -> message of the last refused edit
+    array set values {}
+    array set shown {}
+    array set errors {}
+}
+
+proc ::sf::gui::props::create {path} {
+    variable f
+    ttk::frame $path -padding 4
+    ttk::label $path.title -text Properties -style Heading.TLabel
+    ttk::combobox $path.target -textvariable ::sf::gui::props::target -state readonly -width 18 \
+        -postcommand ::sf::gui::props::targets
+    ::bind $path.target <<ComboboxSelected>> ::sf::gui::props::show
+    ttk::frame $path.rows
+    ttk::label $path.info -justify left -foreground #444444 -wraplength 260
+    grid $path.title -sticky w
+    grid $path.target -sticky ew -pady {2 6}
+    grid $path.rows -sticky nsew
+    grid $path.info -sticky ew -pady {6 0}
+    grid columnconfigure $path 0 -weight 1
+    set f $path
+    show
+    return $path
+}
+
+proc ::sf::gui::props::targets {} {
+    variable f
+    set list {sim view}
+    if {![catch {lattice info}]} { lappend list lattice }
+    foreach m [material names] { lappend list "material $m" }
+    foreach id $::sf::gui::selection { lappend list "element $id" }
+    $f.target configure -values $list
+}
+
+# The selection decides what is shown: one element, else what was chosen.
+proc ::sf::gui::props::refresh {} {
+    variable target
+    variable f
+    if {$f eq ""} return
+    if {[llength $::sf::gui::selection] == 1} {
+        set target "element [lindex $::sf::gui::selection 0]"
+    } elseif {[lindex $target 0] eq "element" && [lindex $target 1] ni [element ids]} {
+        set target sim
+    } elseif {$target eq "lattice" && [catch {lattice info}]} {
+        set target sim
+    }
+    show
+}
+
+# The configure/cget command prefix of the target.
+proc ::sf::gui::props::prefix {} {
+    variable target
+    switch [lindex $target 0] {
+        element { return [list element configure [lindex $target 1]] }
+        material { return [list material configure [lindex $target 1]] }
+        default { return [list $target configure] }
+    }
+}
+
+proc ::sf::gui::props::show {} {
+    variable f
+    variable values
+    variable shown
+    variable errors
+    set rows $f.rows
+    if {[catch {uplevel #0 [prefix]} options]} {
+        set options {}
+    }
+    # Options that do not apply to this shape report {} and are left out.
+    set keep {}
+    foreach {opt value} $options {
+        if {$value eq {} && [lindex [prefix] 0] eq "element" && $opt ni {-fix -stress}} continue
+        lappend keep $opt $value
+    }
+    # Rebuild the rows only when the set of options changes (typing is kept).
+    set names [dict keys $keep]
+    if {[winfo children $rows] eq {} || [lsort [array names shown]] ne [lsort $names]} {
+        foreach child [winfo children $rows] { destroy $child }
+        array unset values
+        array unset shown
+        array unset errors
+        set r 0
+        foreach opt $names {
+            set key [string range $opt 1 end]
+            ttk::label $rows.l$key -text $opt
+            ttk::entry $rows.e$key -textvariable ::sf::gui::props::values($opt) -width 16
+            ttk::label $rows.x$key -foreground #c92a2a -wraplength 240 -justify left
+            grid $rows.l$key $rows.e$key -sticky ew -pady 1
+            grid $rows.x$key -column 0 -columnspan 2 -sticky w
+            grid remove $rows.x$key
+            ::bind $rows.e$key <Return> [list ::sf::gui::props::apply $opt]
+            ::bind $rows.e$key <KP_Enter> [list ::sf::gui::props::apply $opt]
+            ::bind $rows.e$key <FocusOut> [list ::sf::gui::props::apply $opt]
+            ::bind $rows.e$key <Escape> [list ::sf::gui::props::revert $opt]
+            incr r
+        }
+        grid columnconfigure $rows 1 -weight 1
+    }
+    foreach {opt value} $keep {
+        # A field being edited keeps what is typed in it.
+        set key [string range $opt 1 end]
+        if {![info exists shown($opt)] || $values($opt) eq $shown($opt) ||
+            [focus] ne "$rows.e$key"} {
+            if {![info exists errors($opt)]} { set values($opt) $value }
+        }
+        set shown($opt) $value
+    }
+    $f.info configure -text [summary]
+}
+
+# Read-only facts under the options: what `info` says that is not an option.
+proc ::sf::gui::props::summary {} {
+    variable target
+    switch [lindex $target 0] {
+        element {
+            set info [element info [lindex $target 1]]
+            set lines [list "[dict get $info type] [dict get $info id]"]
+            foreach key {mass area velocity contacts fluidforce} {
+                set v [dict get $info $key]
+                if {[llength $v] > 1} { set v [lmap x $v {format %.4g $x}] } else { set v [format %.4g $v] }
+                lappend lines "$key  $v"
+            }
+            return [join $lines \n]
+        }
+        lattice {
+            set info [lattice info]
+            return [format "%d x %d nodes, h %.4g, dt %.4g, tau %.4g" [dict get $info nx] \
+                        [dict get $info ny] [dict get $info spacing] [dict get $info timestep] \
+                        [dict get $info tau]]
+        }
+        default { return "" }
+    }
+}
+
+# Applies one edited field: the configure command, through ::sf::gui::do.
+proc ::sf::gui::props::apply {opt} {
+    variable values
+    variable shown
+    variable errors
+    variable f
+    if {![info exists shown($opt)] || $values($opt) eq $shown($opt)} {
+        clearError $opt
+        return
+    }
+    set cmd [list {*}[prefix] $opt $values($opt)]
+    set undo [list {*}[prefix] $opt $shown($opt)]
+    if {[catch {::sf::gui::do $cmd $undo "[lindex [prefix] 0] $opt"} err]} {
+        set errors($opt) $err
+        set key [string range $opt 1 end]
+        $f.rows.x$key configure -text $err
+        grid $f.rows.x$key
+        $f.rows.e$key state invalid
+        return
+    }
+    clearError $opt
+    show
+}
+
+proc ::sf::gui::props::revert {opt} {
+    variable values
+    variable shown
+    set values($opt) $shown($opt)
+    clearError $opt
+}
+
+proc ::sf::gui::props::clearError {opt} {
+    variable errors
+    variable f
+    unset -nocomplain errors($opt)
+    set key [string range $opt 1 end]
+    if {[winfo exists $f.rows.x$key]} {
+        grid remove $f.rows.x$key
+        $f.rows.e$key state !invalid
+    }
+}

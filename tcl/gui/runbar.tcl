@@ -1,0 +1,162 @@
+# Run controls and the status bar. A run is the `run` command, whoever started
+# it (the Run button, the console, a script): the workbench hooks a tick into
+# it (::sf::gui::runtick) that serves Tk's events at least every 50 ms, redraws
+# the view at the chosen frame rate and feeds the live plots, and that breaks
+# the run when Pause was pressed (run then returns the step it reached).
+
+namespace eval ::sf::gui::runbar {
+    variable steps 1000        ;# Run: steps a press advances (TIMESTEPS)
+    variable fps 20            ;# target frame rate of the view during a run
+    variable pause 0           ;# Pause pressed: the tick breaks the run
+    variable lastFrame 0       ;# clock milliseconds of the last redraw
+    variable progress 0
+    variable text ""           ;# status line
+    variable pauseClicked 0    ;# clock microseconds of the Pause click (latency)
+    variable latency {}        ;# microseconds from Pause click to the run's end
+}
+
+proc ::sf::gui::runbar::create {f} {
+    ttk::frame $f -padding {4 2}
+    ttk::button $f.run -text "\u25b6 Run" -command ::sf::gui::runbar::runPressed -width 8
+    ttk::button $f.pause -text "\u275a\u275a Pause" -command ::sf::gui::runbar::pausePressed -width 8
+    ttk::button $f.step -text "Step" -command ::sf::gui::runbar::stepPressed -width 6
+    ttk::button $f.reset -text "Reset" -command ::sf::gui::runbar::resetPressed -width 6
+    ttk::label $f.lsteps -text "steps"
+    ttk::spinbox $f.steps -from 1 -to 100000000 -increment 100 -width 8 \
+        -textvariable ::sf::gui::runbar::steps
+    ttk::label $f.lfps -text "frames/s"
+    ttk::spinbox $f.fps -from 1 -to 60 -width 4 -textvariable ::sf::gui::runbar::fps
+    ttk::progressbar $f.progress -length 160 -variable ::sf::gui::runbar::progress -maximum 1.0
+    pack $f.run $f.pause $f.step $f.reset -side left -padx 2
+    pack $f.lsteps $f.steps $f.lfps $f.fps -side left -padx {8 2}
+    pack $f.progress -side right -padx 4
+    ::sf::gui::tip $f.run "Run the set number of steps (F5)"
+    ::sf::gui::tip $f.pause "Pause a run, whoever started it (Esc / F6)"
+    ::sf::gui::tip $f.step "One step (F7)"
+    ::sf::gui::tip $f.reset "Empty the scene: reset"
+    ::sf::gui::tip $f.fps "How often the view redraws while a run goes on"
+    $f.pause state disabled
+    ::sf::gui::runtick ::sf::gui::runbar::tick 50
+    return $f
+}
+
+proc ::sf::gui::runbar::statusBar {f} {
+    ttk::frame $f -padding {6 2}
+    ttk::label $f.text -textvariable ::sf::gui::runbar::text -anchor w
+    ttk::label $f.pointer -textvariable ::sf::gui::pointer -width 26 -anchor e
+    ttk::label $f.message -textvariable ::sf::gui::message -anchor w -foreground #555555
+    pack $f.text -side left
+    pack $f.pointer -side right
+    pack $f.message -side left -fill x -expand 1 -padx 12
+    return $f
+}
+
+# Run: `run N` through the console path, so that it is echoed like a typed one.
+proc ::sf::gui::runbar::runPressed {} {
+    variable steps
+    if {[::sf::gui::running]} return
+    if {![string is integer -strict $steps] || $steps < 1} {
+        ::sf::gui::status "steps must be a whole number >= 1" error
+        return
+    }
+    catch {::sf::gui::do [list run $steps]}
+}
+
+proc ::sf::gui::runbar::pausePressed {} {
+    variable pause
+    variable pauseClicked
+    if {![::sf::gui::running]} return
+    set pause 1
+    set pauseClicked [clock microseconds]
+}
+
+proc ::sf::gui::runbar::stepPressed {} {
+    if {[::sf::gui::running]} return
+    catch {::sf::gui::do step}
+}
+
+proc ::sf::gui::runbar::resetPressed {} {
+    if {[::sf::gui::running]} {
+        ::sf::gui::status "pause the run first" error
+        return
+    }
+    if {[llength [element ids]] || ![catch {lattice info}]} {
+        set answer [tk_messageBox -parent . -icon question -type okcancel -title Reset \
+                        -message "Empty the scene?" -detail "This cannot be undone."]
+        if {$answer ne "ok"} return
+    }
+    ::sf::gui::forgetHistory
+    catch {::sf::gui::do reset}
+    ::sf::gui::view::fit
+}
+
+# Called from inside `run` at most every 50 ms.
+proc ::sf::gui::runbar::tick {} {
+    variable pause
+    variable fps
+    variable lastFrame
+    variable progress
+    variable latency
+    variable pauseClicked
+    running 1
+    # The pause is taken before serving events, so a click served now is seen
+    # at the next tick, at most one tick (50 ms) later.
+    if {$pause} {
+        set pause 0
+        lappend latency [expr {[clock microseconds] - $pauseClicked}]
+        running 0
+        return -code break
+    }
+    set now [clock milliseconds]
+    set period [expr {1000.0 / max(1, min(60, $fps))}]
+    if {$now - $lastFrame >= $period} {
+        set lastFrame $now
+        lassign [::sf::gui::progress] done total
+        set progress [expr {$total > 0 ? double($done) / $total : 0.0}]
+        ::sf::gui::view::draw
+        ::sf::gui::runbar::update
+        if {[llength [info commands ::sf::gui::plots::sample]]} { ::sf::gui::plots::sample }
+    }
+    # Serve the window: clicks, keys, typing at the console, `after` scripts.
+    if {[catch {::update} err]} { ::sf::gui::status "event: $err" error }
+    if {$pause} {
+        set pause 0
+        lappend latency [expr {[clock microseconds] - $pauseClicked}]
+        running 0
+        return -code break
+    }
+}
+
+# The buttons' states follow whether a run is going.
+proc ::sf::gui::runbar::running {on} {
+    set f $::sf::gui::W(runbar)
+    if {$on} {
+        $f.run state disabled
+        $f.step state disabled
+        $f.reset state disabled
+        $f.pause state !disabled
+    } else {
+        $f.run state !disabled
+        $f.step state !disabled
+        $f.reset state !disabled
+        $f.pause state disabled
+    }
+}
+
+# Step, time, speed, Mach and warnings in the status bar.
+proc ::sf::gui::runbar::update {} {
+    variable text
+    variable progress
+    running [::sf::gui::running]
+    if {![::sf::gui::running]} { set progress 0 }
+    if {[catch {sim info} info]} return
+    set parts [list "step [dict get $info step]" [format "t %.5g" [dict get $info time]]]
+    if {[dict get $info nodes] > 0} {
+        lappend parts [format "%.1f MLUPS" [dict get $info mlups]]
+        lappend parts [format "Mach %.3f" [dict get $info mach]]
+    }
+    lappend parts "[dict get $info elements] elements"
+    set nw [llength [dict get $info warnings]]
+    if {$nw} { lappend parts "$nw warnings" }
+    set text [join $parts "   \u00b7   "]
+}
