@@ -27,27 +27,32 @@ int advance(Session& s) {
   return recordStep(s);
 }
 
-// A run's tick (the workbench's ::sf::gui::runtick) may serve a click that
-// asks for another run or step: refused, the run in progress goes on.
+// A run's tick (the workbench's ::sf::gui::runtick) may serve a click or a
+// typed command that asks for another run, a step or a reset: refused, the
+// run in progress goes on. (An -every script may do all three.)
 int refuseWhileRunning(const Session& s) {
-  if (!s.running) return TCL_OK;
+  if (!s.inTick) return TCL_OK;
   return fail(s.interp, "BUSY RUN",
               "a run is in progress (step " + std::to_string(s.manager.stepCount()) +
                   "): pause it first");
 }
 
-// Clears Session::running however the run ends.
+// Sets Session::running for the run, restored however it ends (a run in an
+// -every script leaves the outer one running).
 struct RunningFlag {
   Session& s;
-  explicit RunningFlag(Session& session) : s(session) { s.running = true; }
-  ~RunningFlag() { s.running = false; }
+  bool was;
+  explicit RunningFlag(Session& session) : s(session), was(session.running) { s.running = true; }
+  ~RunningFlag() { s.running = was; }
 };
 
 // Evaluates the tick script; TCL_BREAK asks the run to pause.
 int tick(Session& s) {
   Tcl_Obj* script = s.runTick;
   Tcl_IncrRefCount(script);  // the tick may replace itself
+  s.inTick = true;
   const int code = Tcl_EvalObjEx(s.interp, script, TCL_EVAL_GLOBAL);
+  s.inTick = false;
   Tcl_DecrRefCount(script);
   if (code == TCL_ERROR) Tcl_AddErrorInfo(s.interp, "\n    (in the workbench's run tick)");
   return code;

@@ -8,7 +8,9 @@ namespace eval ::sf::gui::runbar {
     variable steps 1000        ;# Run: steps a press advances (TIMESTEPS)
     variable fps 20            ;# target frame rate of the view during a run
     variable pause 0           ;# Pause pressed: the tick breaks the run
-    variable lastFrame 0       ;# clock milliseconds of the last redraw
+    variable nextFrame 0       ;# clock milliseconds when the next redraw is due
+    variable budget 0.1        ;# the view's largest share of a run's time
+    variable frameCost {}      ;# milliseconds each redraw took (the last 50)
     variable progress 0
     variable text ""           ;# status line
     variable pauseClicked 0    ;# clock microseconds of the Pause click (latency)
@@ -94,7 +96,9 @@ proc ::sf::gui::runbar::resetPressed {} {
 proc ::sf::gui::runbar::tick {} {
     variable pause
     variable fps
-    variable lastFrame
+    variable nextFrame
+    variable budget
+    variable frameCost
     variable progress
     variable latency
     variable pauseClicked
@@ -108,14 +112,20 @@ proc ::sf::gui::runbar::tick {} {
         return -code break
     }
     set now [clock milliseconds]
-    set period [expr {1000.0 / max(1, min(60, $fps))}]
-    if {$now - $lastFrame >= $period} {
-        set lastFrame $now
+    if {$now >= $nextFrame} {
+        set t0 [clock microseconds]
         lassign [::sf::gui::progress] done total
         set progress [expr {$total > 0 ? double($done) / $total : 0.0}]
         ::sf::gui::view::draw
         ::sf::gui::runbar::update
         if {[llength [info commands ::sf::gui::plots::sample]]} { ::sf::gui::plots::sample }
+        # The frame rate asked for, unless frames cost more than the budget's
+        # share of the run: a large lattice redraws less often, never slowing
+        # the run by more than the budget.
+        set cost [expr {([clock microseconds] - $t0) / 1000.0}]
+        set frameCost [lrange [lappend frameCost $cost] end-49 end]
+        set period [expr {max(1000.0 / max(1, min(60, $fps)), $cost * (1 - $budget) / $budget)}]
+        set nextFrame [expr {$now + round($period)}]
     }
     # Serve the window: clicks, keys, typing at the console, `after` scripts.
     if {[catch {::update} err]} { ::sf::gui::status "event: $err" error }

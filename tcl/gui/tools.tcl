@@ -83,7 +83,7 @@ proc ::sf::gui::tools::bind {w} {
     ::bind $w <ButtonPress-1> {::sf::gui::tools::press %x %y %s}
     ::bind $w <B1-Motion> {::sf::gui::tools::motion %x %y}
     ::bind $w <ButtonRelease-1> {::sf::gui::tools::release %x %y %s}
-    ::bind $w <Double-Button-1> {::sf::gui::tools::closePolygon}
+    ::bind $w <Double-Button-1> {::sf::gui::tools::double %x %y %s}
     ::bind $w <ButtonPress-2> {::sf::gui::tools::panStart %x %y}
     ::bind $w <B2-Motion> {::sf::gui::tools::panMotion %x %y}
     ::bind $w <Shift-ButtonPress-1> {::sf::gui::tools::panStart %x %y}
@@ -117,7 +117,12 @@ proc ::sf::gui::tools::gridStep {} {
 
 proc ::sf::gui::tools::snapValue {v} {
     variable snap
-    if {!$snap} { return $v }
+    if {!$snap} {
+        # No finer than a tenth of a pixel: commands read {0.7 0.25}, not
+        # {0.6998992950654581 0.25}.
+        set digits [expr {max(0, -int(floor(log10([::sf::gui::view::pixelSize] / 10))))}]
+        return [expr {double([format %.${digits}f $v])}]
+    }
     set h [gridStep]
     # Lattice nodes sit at cell centres: snap to the cell corners, which is where
     # boxes and boundaries fall between nodes.
@@ -358,6 +363,13 @@ proc ::sf::gui::tools::showPolygon {{p {}}} {
         lappend items [list circle $preview $x $y [expr {3 * [::sf::gui::view::pixelSize]}]]
     }
     setOverlay $items
+}
+
+# A second click soon after the first: it closes a polygon, and is a plain
+# press for every other tool (a quick click then drag must still drag).
+proc ::sf::gui::tools::double {px py state} {
+    variable tool
+    if {$tool eq "polygon"} { closePolygon } else { press $px $py $state }
 }
 
 proc ::sf::gui::tools::closePolygon {} {
