@@ -6,7 +6,7 @@
 # it at the default frame rate. Prints one line per run, then the verdict:
 #   run bare|view steps K ms_per_step T frames F fps P
 #   overhead <%> (target <= 10%) fps <median>  pause_ms <median> frame_ms <period>
-set options [dict merge {-cells 1024 -steps 150 -reps 3} $argv]
+set options [dict merge {-cells 1024 -steps 400 -reps 3} $argv]
 set n [dict get $options -cells]
 set steps [dict get $options -steps]
 set reps [dict get $options -reps]

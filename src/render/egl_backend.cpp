@@ -5,6 +5,8 @@
 #include <EGL/eglext.h>
 #include <GL/gl.h>
 
+#include <dlfcn.h>
+
 #include <cstdio>
 
 #include "sandflow/render/gl_draw.hpp"
@@ -90,9 +92,50 @@ bool useSurface(int width, int height, std::string& error) {
   return true;
 }
 
+// In the workbench a GLX context (Togl's view) may be current on this thread,
+// and GLVND refuses to make an EGL context current over another API's
+// (EGL_BAD_ACCESS). This releases it for the picture and restores it after,
+// through libGLX if the process has loaded it (this module does not link it).
+class GlxReleased {
+ public:
+  GlxReleased() {
+    handle_ = dlopen("libGLX.so.0", RTLD_LAZY | RTLD_NOLOAD);
+    if (!handle_) return;
+    const auto currentContext = reinterpret_cast<void* (*)()>(dlsym(handle_, "glXGetCurrentContext"));
+    const auto currentDisplay = reinterpret_cast<void* (*)()>(dlsym(handle_, "glXGetCurrentDisplay"));
+    const auto currentDrawable =
+        reinterpret_cast<unsigned long (*)()>(dlsym(handle_, "glXGetCurrentDrawable"));
+    makeCurrent_ =
+        reinterpret_cast<int (*)(void*, unsigned long, void*)>(dlsym(handle_, "glXMakeCurrent"));
+    if (!currentContext || !currentDisplay || !currentDrawable || !makeCurrent_) return;
+    context_ = currentContext();
+    if (!context_) return;
+    display_ = currentDisplay();
+    drawable_ = currentDrawable();
+    makeCurrent_(display_, 0, nullptr);
+  }
+  ~GlxReleased() {
+    if (context_) {
+      eglMakeCurrent(egl.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      makeCurrent_(display_, drawable_, context_);
+    }
+    if (handle_) dlclose(handle_);
+  }
+  GlxReleased(const GlxReleased&) = delete;
+  GlxReleased& operator=(const GlxReleased&) = delete;
+
+ private:
+  void* handle_ = nullptr;
+  int (*makeCurrent_)(void*, unsigned long, void*) = nullptr;
+  void* display_ = nullptr;
+  unsigned long drawable_ = 0;
+  void* context_ = nullptr;
+};
+
 bool renderEgl(const DrawList& list, Image& out, std::string& error) {
   if (egl.context == EGL_NO_CONTEXT && !initialise(error)) return false;
   if (!useSurface(list.width, list.height, error)) return false;
+  const GlxReleased released;
   if (!eglMakeCurrent(egl.display, egl.surface, egl.surface, egl.context)) {
     error = eglFailure("making the context current");
     return false;

@@ -58,9 +58,8 @@ proc ::sf::gui::plots::clear {} {
 }
 
 # The chosen series' value now.
-proc ::sf::gui::plots::value {} {
+proc ::sf::gui::plots::value {info} {
     variable series
-    set info [sim info]
     switch $series {
         fluidfx - fluidfy {
             set ids $::sf::gui::selection
@@ -76,11 +75,13 @@ proc ::sf::gui::plots::value {} {
 }
 
 # Takes one sample (the run's tick calls this at the view's frame rate).
-proc ::sf::gui::plots::sample {} {
+proc ::sf::gui::plots::sample {{info {}}} {
     variable samples
     variable maxSamples
     variable lastDraw
-    if {[catch {value} v] || [catch {dict get [sim info] time} t]} return
+    if {$info eq {} && [catch {sim info} info]} return
+    if {[catch {value $info} v]} return
+    set t [dict get $info time]
     if {[llength $samples] && [lindex $samples end 0] == $t} {
         lset samples end [list $t $v]
     } else {

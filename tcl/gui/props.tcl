@@ -73,7 +73,14 @@ proc ::sf::gui::props::show {} {
     variable values
     variable shown
     variable errors
+    variable lastTarget
+    variable target
     set rows $f.rows
+    # A refused edit belongs to what it was typed for.
+    if {![info exists lastTarget] || $lastTarget ne $target} {
+        foreach opt [array names errors] { clearError $opt }
+        set lastTarget $target
+    }
     if {[catch {uplevel #0 [prefix]} options]} {
         set options {}
     }
@@ -96,8 +103,10 @@ proc ::sf::gui::props::show {} {
             ttk::label $rows.l$key -text $opt
             ttk::entry $rows.e$key -textvariable ::sf::gui::props::values($opt) -width 16
             ttk::label $rows.x$key -foreground #c92a2a -wraplength 240 -justify left
-            grid $rows.l$key $rows.e$key -sticky ew -pady 1
-            grid $rows.x$key -column 0 -columnspan 2 -sticky w
+            # Each option takes two rows: the field, and its refusal beneath.
+            grid $rows.l$key -row [expr {2 * $r}] -column 0 -sticky ew -pady 1
+            grid $rows.e$key -row [expr {2 * $r}] -column 1 -sticky ew -pady 1
+            grid $rows.x$key -row [expr {2 * $r + 1}] -column 0 -columnspan 2 -sticky w
             grid remove $rows.x$key
             ::bind $rows.e$key <Return> [list ::sf::gui::props::apply $opt]
             ::bind $rows.e$key <KP_Enter> [list ::sf::gui::props::apply $opt]
@@ -108,11 +117,18 @@ proc ::sf::gui::props::show {} {
         grid columnconfigure $rows 1 -weight 1
     }
     foreach {opt value} $keep {
-        # A field being edited keeps what is typed in it.
         set key [string range $opt 1 end]
-        if {![info exists shown($opt)] || $values($opt) eq $shown($opt) ||
-            [focus] ne "$rows.e$key"} {
-            if {![info exists errors($opt)]} { set values($opt) $value }
+        if {[info exists errors($opt)]} {
+            # A refused value stays in its field, its reason beneath it.
+            lassign $errors($opt) refused message
+            set values($opt) $refused
+            $rows.x$key configure -text $message
+            grid $rows.x$key
+            $rows.e$key state invalid
+        } elseif {![info exists shown($opt)] || $values($opt) eq $shown($opt) ||
+                  [focus] ne "$rows.e$key"} {
+            # A field being edited keeps what is typed in it.
+            set values($opt) $value
         }
         set shown($opt) $value
     }
@@ -155,12 +171,10 @@ proc ::sf::gui::props::apply {opt} {
     }
     set cmd [list {*}[prefix] $opt $values($opt)]
     set undo [list {*}[prefix] $opt $shown($opt)]
+    set refused $values($opt)
     if {[catch {::sf::gui::do $cmd $undo "[lindex [prefix] 0] $opt"} err]} {
-        set errors($opt) $err
-        set key [string range $opt 1 end]
-        $f.rows.x$key configure -text $err
-        grid $f.rows.x$key
-        $f.rows.e$key state invalid
+        set errors($opt) [list $refused $err]
+        show
         return
     }
     clearError $opt
@@ -170,8 +184,8 @@ proc ::sf::gui::props::apply {opt} {
 proc ::sf::gui::props::revert {opt} {
     variable values
     variable shown
-    set values($opt) $shown($opt)
     clearError $opt
+    set values($opt) $shown($opt)
 }
 
 proc ::sf::gui::props::clearError {opt} {

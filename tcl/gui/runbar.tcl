@@ -117,15 +117,19 @@ proc ::sf::gui::runbar::tick {} {
         lassign [::sf::gui::progress] done total
         set progress [expr {$total > 0 ? double($done) / $total : 0.0}]
         ::sf::gui::view::draw
-        ::sf::gui::runbar::update
-        if {[llength [info commands ::sf::gui::plots::sample]]} { ::sf::gui::plots::sample }
+        # `sim info` scans the lattice (Mach, mass): once a frame, shared.
+        set info [sim info]
+        ::sf::gui::runbar::update $info
+        if {[llength [info commands ::sf::gui::plots::sample]]} { ::sf::gui::plots::sample $info }
         # The frame rate asked for, unless frames cost more than the budget's
         # share of the run: a large lattice redraws less often, never slowing
-        # the run by more than the budget.
-        set cost [expr {([clock microseconds] - $t0) / 1000.0}]
+        # the run by more than the budget. The next frame is timed from this
+        # one's end, also across runs.
+        set end [clock microseconds]
+        set cost [expr {($end - $t0) / 1000.0}]
         set frameCost [lrange [lappend frameCost $cost] end-49 end]
         set period [expr {max(1000.0 / max(1, min(60, $fps)), $cost * (1 - $budget) / $budget)}]
-        set nextFrame [expr {$now + round($period)}]
+        set nextFrame [expr {$end / 1000 + round($period)}]
     }
     # Serve the window: clicks, keys, typing at the console, `after` scripts.
     if {[catch {::update} err]} { ::sf::gui::status "event: $err" error }
@@ -154,12 +158,12 @@ proc ::sf::gui::runbar::running {on} {
 }
 
 # Step, time, speed, Mach and warnings in the status bar.
-proc ::sf::gui::runbar::update {} {
+proc ::sf::gui::runbar::update {{info {}}} {
     variable text
     variable progress
     running [::sf::gui::running]
     if {![::sf::gui::running]} { set progress 0 }
-    if {[catch {sim info} info]} return
+    if {$info eq {} && [catch {sim info} info]} return
     set parts [list "step [dict get $info step]" [format "t %.5g" [dict get $info time]]]
     if {[dict get $info nodes] > 0} {
         lappend parts [format "%.1f MLUPS" [dict get $info mlups]]

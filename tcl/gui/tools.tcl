@@ -11,6 +11,7 @@ namespace eval ::sf::gui::tools {
     variable material default
     variable cells 100          ;# lattice: cells across x
     variable viscosity 0.01     ;# lattice: kinematic viscosity
+    variable forcing {0 0}      ;# lattice: body force {Fx Fy}
     variable exponents {4 4}    ;# superquadric
     variable drag {}            ;# the gesture in progress: dict
     variable vertices {}        ;# polygon being clicked
@@ -51,6 +52,7 @@ proc ::sf::gui::tools::create {f} {
         material  Material  10 "Material of new elements"
         cells     Cells     6  "Lattice: cells across x"
         viscosity Viscosity 8  "Lattice: kinematic viscosity"
+        forcing   Forcing   8  "Lattice: body force {Fx Fy} (a pressure gradient)"
         exponents Exponents 6  "Superquadric: exponents {m n}"
     } {
         ttk::label $f.l$var -text $label
@@ -128,7 +130,7 @@ proc ::sf::gui::tools::snapValue {v} {
     # boxes and boundaries fall between nodes.
     set o 0.0
     if {![catch {lattice info} info]} { set o [lindex [dict get $info origin] 0] }
-    expr {$o + round(($v - $o) / $h) * $h}
+    tidy [expr {$o + round(($v - $o) / $h) * $h}]
 }
 
 proc ::sf::gui::tools::setOverlay {items} {
@@ -289,7 +291,15 @@ proc ::sf::gui::tools::shapeOverlay {tool x0 y0 x1 y1} {
 # The circle that fills a box's shorter side, centred in it.
 proc ::sf::gui::tools::inscribed {x0 y0 x1 y1} {
     set r [expr {0.5 * min(abs($x1 - $x0), abs($y1 - $y0))}]
-    list [expr {0.5 * ($x0 + $x1)}] [expr {0.5 * ($y0 + $y1)}] $r
+    lmap c [list [expr {0.5 * ($x0 + $x1)}] [expr {0.5 * ($y0 + $y1)}] $r] {tidy $c}
+}
+
+# A value derived from points (a centre, a radius) at the points' precision.
+proc ::sf::gui::tools::tidy {v} {
+    set step [expr {[::sf::gui::view::pixelSize] / 10}]
+    if {$::sf::gui::tools::snap} { set step [expr {[gridStep] / 10}] }
+    set digits [expr {max(0, -int(floor(log10($step))))}]
+    expr {double([format %.${digits}f $v])}
 }
 
 # The command a finished drag makes, run through ::sf::gui::do.
@@ -297,6 +307,7 @@ proc ::sf::gui::tools::make {tool x0 y0 x1 y1} {
     variable material
     variable cells
     variable viscosity
+    variable forcing
     variable exponents
     set lo [list [expr {min($x0, $x1)}] [expr {min($y0, $y1)}]]
     set hi [list [expr {max($x0, $x1)}] [expr {max($y0, $y1)}]]
@@ -305,13 +316,16 @@ proc ::sf::gui::tools::make {tool x0 y0 x1 y1} {
     set mat [expr {$material eq "" || $material eq "default" ? {} : [list -material $material]}]
     switch $tool {
         lattice {
-            set lx [expr {$bx1 - $bx0}]
+            set lx [tidy [expr {$bx1 - $bx0}]]
             set h [expr {$lx / $cells}]
             # The height as a whole number of spacings.
             set ny [expr {max(1, round(($by1 - $by0) / $h))}]
-            set ly [expr {$ny * $h}]
+            set ly [tidy [expr {$ny * $h}]]
             set cmd [list lattice create -origin $lo -size [list $lx $ly] -cells $cells \
                          -viscosity $viscosity]
+            if {[llength $forcing] == 2 && ([lindex $forcing 0] != 0 || [lindex $forcing 1] != 0)} {
+                lappend cmd -forcing $forcing
+            }
             if {![catch {lattice info}]} {
                 return -code error "there is a lattice already: delete it first (lattice delete)"
             }
@@ -336,8 +350,8 @@ proc ::sf::gui::tools::make {tool x0 y0 x1 y1} {
         }
         ellipse - superquadric {
             set id [element next]
-            set c [list [expr {0.5 * ($bx0 + $bx1)}] [expr {0.5 * ($by0 + $by1)}]]
-            set axes [list [expr {0.5 * ($bx1 - $bx0)}] [expr {0.5 * ($by1 - $by0)}]]
+            set c [list [tidy [expr {0.5 * ($bx0 + $bx1)}]] [tidy [expr {0.5 * ($by0 + $by1)}]]]
+            set axes [list [tidy [expr {0.5 * ($bx1 - $bx0)}]] [tidy [expr {0.5 * ($by1 - $by0)}]]]
             set extra [expr {$tool eq "superquadric" ? [list -exponents $exponents] : {}}]
             ::sf::gui::do [list $tool create -id $id -center $c -axes $axes {*}$extra {*}$mat] \
                 [list element delete $id] "$tool $id"
