@@ -7,9 +7,11 @@
 namespace eval ::sf::gui::runbar {
     variable steps 1000        ;# Run: steps a press advances (TIMESTEPS)
     variable fps 20            ;# target frame rate of the view during a run
+    variable stepsPerFrame 0   ;# > 0: redraw every this many steps instead (GRAPHICSFRAMES)
+    variable lastFrameStep -1
     variable pause 0           ;# Pause pressed: the tick breaks the run
     variable nextFrame 0       ;# clock milliseconds when the next redraw is due
-    variable budget 0.1        ;# the view's largest share of a run's time
+    variable budget 0.08       ;# the view's share of a run's time: under 10% with the tick's own work
     variable frameCost {}      ;# milliseconds each redraw took (the last 50)
     variable progress 0
     variable text ""           ;# status line
@@ -28,15 +30,19 @@ proc ::sf::gui::runbar::create {f} {
         -textvariable ::sf::gui::runbar::steps
     ttk::label $f.lfps -text "frames/s"
     ttk::spinbox $f.fps -from 1 -to 60 -width 4 -textvariable ::sf::gui::runbar::fps
+    ttk::label $f.lspf -text "or every"
+    ttk::spinbox $f.spf -from 0 -to 1000000 -width 6 -textvariable ::sf::gui::runbar::stepsPerFrame
+    ttk::label $f.lspf2 -text "steps" 
     ttk::progressbar $f.progress -length 160 -variable ::sf::gui::runbar::progress -maximum 1.0
     pack $f.run $f.pause $f.step $f.reset -side left -padx 2
-    pack $f.lsteps $f.steps $f.lfps $f.fps -side left -padx {8 2}
+    pack $f.lsteps $f.steps $f.lfps $f.fps $f.lspf $f.spf $f.lspf2 -side left -padx {8 2}
     pack $f.progress -side right -padx 4
     ::sf::gui::tip $f.run "Run the set number of steps (F5)"
     ::sf::gui::tip $f.pause "Pause a run, whoever started it (Esc / F6)"
     ::sf::gui::tip $f.step "One step (F7)"
     ::sf::gui::tip $f.reset "Empty the scene: reset"
-    ::sf::gui::tip $f.fps "How often the view redraws while a run goes on"
+    ::sf::gui::tip $f.fps "How often the view redraws while a run goes on (frames are skipped if drawing would take more than 10% of the run)"
+    ::sf::gui::tip $f.spf "Redraw every this many steps instead (0: by the frame rate)"
     $f.pause state disabled
     ::sf::gui::runtick ::sf::gui::runbar::tick 50
     return $f
@@ -99,6 +105,8 @@ proc ::sf::gui::runbar::tick {} {
     variable nextFrame
     variable budget
     variable frameCost
+    variable stepsPerFrame
+    variable lastFrameStep
     variable progress
     variable latency
     variable pauseClicked
@@ -112,9 +120,18 @@ proc ::sf::gui::runbar::tick {} {
         return -code break
     }
     set now [clock milliseconds]
-    if {$now >= $nextFrame} {
+    lassign [::sf::gui::progress] done total
+    # Every K steps when asked (each frame shown, whatever it costs), else by
+    # the frame rate within the budget.
+    if {[string is integer -strict $stepsPerFrame] && $stepsPerFrame > 0} {
+        set due [expr {$lastFrameStep < 0 || $done < $lastFrameStep ||
+                       $done - $lastFrameStep >= $stepsPerFrame}]
+    } else {
+        set due [expr {$now >= $nextFrame}]
+    }
+    if {$due} {
+        set lastFrameStep $done
         set t0 [clock microseconds]
-        lassign [::sf::gui::progress] done total
         set progress [expr {$total > 0 ? double($done) / $total : 0.0}]
         ::sf::gui::view::draw
         # `sim info` scans the lattice (Mach, mass): once a frame, shared.
