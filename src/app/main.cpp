@@ -71,7 +71,8 @@ int runGui(const char* argv0, int argc, char** argv) {
   Tcl_Interp* interp = Tcl_CreateInterp();
   // As for a headless script: argv0 is the script, argv its arguments.
   const bool hasScript = argc >= 1;
-  setArgv(interp, hasScript ? argv[0] : argv0, hasScript ? argc - 1 : 0, argv + (hasScript ? 1 : 0));
+  setArgv(interp, hasScript ? argv[0] : argv0, hasScript ? argc - 1 : 0,
+          argv + (hasScript ? 1 : 0));
   int code = appInit(interp);
   if (code == TCL_OK) {
     Tcl_Eval(interp, "namespace eval ::sf::gui {}");

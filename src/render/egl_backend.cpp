@@ -101,8 +101,10 @@ class GlxReleased {
   GlxReleased() {
     handle_ = dlopen("libGLX.so.0", RTLD_LAZY | RTLD_NOLOAD);
     if (!handle_) return;
-    const auto currentContext = reinterpret_cast<void* (*)()>(dlsym(handle_, "glXGetCurrentContext"));
-    const auto currentDisplay = reinterpret_cast<void* (*)()>(dlsym(handle_, "glXGetCurrentDisplay"));
+    const auto currentContext =
+        reinterpret_cast<void* (*)()>(dlsym(handle_, "glXGetCurrentContext"));
+    const auto currentDisplay =
+        reinterpret_cast<void* (*)()>(dlsym(handle_, "glXGetCurrentDisplay"));
     const auto currentDrawable =
         reinterpret_cast<unsigned long (*)()>(dlsym(handle_, "glXGetCurrentDrawable"));
     makeCurrent_ =

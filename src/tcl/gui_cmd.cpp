@@ -76,9 +76,9 @@ bool addOverlay(Tcl_Interp* interp, Tcl_Obj* items, const render::WorldWindow& w
     }
     int r = 0, g = 0, b = 0;
     if (std::sscanf(Tcl_GetString(word[1]), "#%2x%2x%2x", &r, &g, &b) != 3)
-      return reject(interp, "VALUE OVERLAY",
-                    std::string("bad overlay colour \"") + Tcl_GetString(word[1]) +
-                        "\": must be #rrggbb");
+      return reject(
+          interp, "VALUE OVERLAY",
+          std::string("bad overlay colour \"") + Tcl_GetString(word[1]) + "\": must be #rrggbb");
     std::vector<double> c(std::size_t(m - 2));
     for (int q = 2; q < m; ++q)
       if (!getDouble(interp, word[q], "overlay", c[std::size_t(q - 2)])) return false;
@@ -110,8 +110,8 @@ bool addOverlay(Tcl_Interp* interp, Tcl_Obj* items, const render::WorldWindow& w
 // built at this size over this region (only the overlay changed).
 bool frameList(Tcl_Interp* interp, Session& s, const render::ViewOptions& v, bool reuse,
                render::DrawList& list) {
-  const bool same = reuse && s.viewList && s.viewList->width == v.width &&
-                    s.viewList->height == v.height;
+  const bool same =
+      reuse && s.viewList && s.viewList->width == v.width && s.viewList->height == v.height;
   if (!same) {
     const int code = guarded(interp, [&] {
       s.viewList = std::make_unique<render::DrawList>(render::buildScene(s.manager, v, 1));
@@ -242,8 +242,8 @@ int RunTick(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
   if (objc == 3) {
     if (!getInt(interp, objv[2], "ms", ms)) return TCL_ERROR;
     if (ms < 1 || ms > 10000)
-      return fail(interp, "VALUE TICK", "the tick interval must be 1 to 10000 ms, got " +
-                                            std::to_string(ms));
+      return fail(interp, "VALUE TICK",
+                  "the tick interval must be 1 to 10000 ms, got " + std::to_string(ms));
   }
   int length = 0;
   Tcl_GetStringFromObj(objv[1], &length);

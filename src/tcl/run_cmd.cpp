@@ -32,9 +32,9 @@ int advance(Session& s) {
 // run in progress goes on. (An -every script may do all three.)
 int refuseWhileRunning(const Session& s) {
   if (!s.inTick) return TCL_OK;
-  return fail(s.interp, "BUSY RUN",
-              "a run is in progress (step " + std::to_string(s.manager.stepCount()) +
-                  "): pause it first");
+  return fail(
+      s.interp, "BUSY RUN",
+      "a run is in progress (step " + std::to_string(s.manager.stepCount()) + "): pause it first");
 }
 
 // Sets Session::running for the run, restored however it ends (a run in an

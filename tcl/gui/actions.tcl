@@ -58,37 +58,26 @@ proc ::sf::gui::doAll {label pairs} {
     changed
 }
 
-proc ::sf::gui::undo {} {
-    variable undoStack
-    variable redoStack
-    if {![llength $undoStack]} { status "nothing to undo"; return }
-    lassign [lindex $undoStack end] label cmd undo
-    set undoStack [lrange $undoStack 0 end-1]
-    echo $undo
-    if {[catch {uplevel #0 $undo} result]} {
-        showError "undo $label: $result"
-        changed
-        return
-    }
-    lappend redoStack [list $label $cmd $undo]
-    status "undone: $label"
-    changed
-}
+proc ::sf::gui::undo {} { replay undoStack redoStack 2 undone }
+proc ::sf::gui::redo {} { replay redoStack undoStack 1 redone }
 
-proc ::sf::gui::redo {} {
-    variable undoStack
-    variable redoStack
-    if {![llength $redoStack]} { status "nothing to redo"; return }
-    lassign [lindex $redoStack end] label cmd undo
-    set redoStack [lrange $redoStack 0 end-1]
-    echo $cmd
-    if {[catch {uplevel #0 $cmd} result]} {
-        showError "redo $label: $result"
+# Moves the newest entry of one history to the other, running its undo
+# (field 2) or its command (field 1). A step that fails stays where it was.
+proc ::sf::gui::replay {fromName toName field verb} {
+    upvar #0 ::sf::gui::$fromName from ::sf::gui::$toName to
+    if {![llength $from]} { status "nothing to [string range $verb 0 end-2]"; return }
+    set entry [lindex $from end]
+    set label [lindex $entry 0]
+    set script [lindex $entry $field]
+    echo $script
+    if {[catch {uplevel #0 $script} result]} {
+        showError "[string range $verb 0 end-2] $label: $result"
         changed
         return
     }
-    lappend undoStack [list $label $cmd $undo]
-    status "redone: $label"
+    set from [lrange $from 0 end-1]
+    lappend to $entry
+    status "$verb: $label"
     changed
 }
 

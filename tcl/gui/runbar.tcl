@@ -174,6 +174,26 @@ proc ::sf::gui::runbar::running {on} {
     }
 }
 
+# Element steps per second between two updates of a run without a lattice.
+proc ::sf::gui::runbar::particleRate {info} {
+    variable lastRate
+    set now [clock microseconds]
+    set step [dict get $info step]
+    set text ""
+    if {[info exists lastRate]} {
+        lassign $lastRate t0 s0 text0
+        set dt [expr {($now - $t0) / 1e6}]
+        if {$step > $s0 && $dt > 0} {
+            set text [format "%.3g particle-steps/s" \
+                          [expr {($step - $s0) * [dict get $info elements] / $dt}]]
+        } else {
+            set text $text0
+        }
+    }
+    set lastRate [list $now $step $text]
+    return $text
+}
+
 # Step, time, speed, Mach and warnings in the status bar.
 proc ::sf::gui::runbar::update {{info {}}} {
     variable text
@@ -185,6 +205,8 @@ proc ::sf::gui::runbar::update {{info {}}} {
     if {[dict get $info nodes] > 0} {
         lappend parts [format "%.1f MLUPS" [dict get $info mlups]]
         lappend parts [format "Mach %.3f" [dict get $info mach]]
+    } elseif {[set rate [particleRate $info]] ne ""} {
+        lappend parts $rate
     }
     lappend parts "[dict get $info elements] elements"
     set nw [llength [dict get $info warnings]]

@@ -58,8 +58,8 @@ struct Session {
   // and redraws; `break` from it pauses the run.
   Tcl_Obj* runTick = nullptr;
   int runTickMs = 50;
-  bool running = false;  // a run is in progress
-  bool inTick = false;   // its tick is serving the GUI's events
+  bool running = false;                 // a run is in progress
+  bool inTick = false;                  // its tick is serving the GUI's events
   long long runDone = 0, runTotal = 0;  // the run's progress, for the GUI's bar
   // The workbench view's last picture without its overlay (rubber bands, the
   // selection), so that a drag redraws only what moves.
