@@ -257,7 +257,8 @@ int RunTick(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
   return TCL_OK;
 }
 
-// ::sf::gui::progress -> {done total}: steps of the run in progress (or the last).
+// ::sf::gui::progress -> {done total run}: steps of the run in progress (or the
+// last), and how many runs have started.
 int Progress(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
     Tcl_WrongNumArgs(interp, 1, objv, nullptr);
@@ -267,6 +268,7 @@ int Progress(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
   Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
   Tcl_ListObjAppendElement(nullptr, list, Tcl_NewWideIntObj(s.runDone));
   Tcl_ListObjAppendElement(nullptr, list, Tcl_NewWideIntObj(s.runTotal));
+  Tcl_ListObjAppendElement(nullptr, list, Tcl_NewWideIntObj(s.runs));
   Tcl_SetObjResult(interp, list);
   return TCL_OK;
 }

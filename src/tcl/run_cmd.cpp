@@ -79,6 +79,7 @@ int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   Tcl_WideInt done = 0;
   RunningFlag running(s);
   s.runTotal = steps;
+  ++s.runs;
   using Clock = std::chrono::steady_clock;
   auto lastTick = Clock::now();
   for (; done < steps; ++done) {

@@ -9,9 +9,12 @@ namespace eval ::sf::gui::runbar {
     variable fps 20            ;# target frame rate of the view during a run
     variable stepsPerFrame 0   ;# > 0: redraw every this many steps instead (GRAPHICSFRAMES)
     variable lastFrameStep -1
+    variable period 50.0       ;# milliseconds between frames, as last worked out
+    variable run -1            ;# the run the tick last served
     variable pause 0           ;# Pause pressed: the tick breaks the run
     variable nextFrame 0       ;# clock milliseconds when the next redraw is due
-    variable budget 0.08       ;# the view's share of a run's time: under 10% with the tick's own work
+    variable budget 0.05       ;# the view's own share of a run's time: a frame also slows the
+                               ;# steps after it (caches refilled), so 5% keeps the total under 10%
     variable frameCost {}      ;# milliseconds each redraw took (the last 50)
     variable progress 0
     variable text ""           ;# status line
@@ -107,6 +110,8 @@ proc ::sf::gui::runbar::tick {} {
     variable frameCost
     variable stepsPerFrame
     variable lastFrameStep
+    variable period
+    variable run
     variable progress
     variable latency
     variable pauseClicked
@@ -120,12 +125,18 @@ proc ::sf::gui::runbar::tick {} {
         return -code break
     }
     set now [clock milliseconds]
-    lassign [::sf::gui::progress] done total
+    lassign [::sf::gui::progress] done total serial
+    # A new run starts from the picture the view already shows: its first
+    # frame comes a period (or K steps) in, not at once.
+    if {$serial != $run} {
+        set run $serial
+        set lastFrameStep 0
+        set nextFrame [expr {$now + round($period)}]
+    }
     # Every K steps when asked (each frame shown, whatever it costs), else by
     # the frame rate within the budget.
     if {[string is integer -strict $stepsPerFrame] && $stepsPerFrame > 0} {
-        set due [expr {$lastFrameStep < 0 || $done < $lastFrameStep ||
-                       $done - $lastFrameStep >= $stepsPerFrame}]
+        set due [expr {$done - $lastFrameStep >= $stepsPerFrame}]
     } else {
         set due [expr {$now >= $nextFrame}]
     }

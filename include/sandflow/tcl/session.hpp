@@ -61,6 +61,7 @@ struct Session {
   bool running = false;                 // a run is in progress
   bool inTick = false;                  // its tick is serving the GUI's events
   long long runDone = 0, runTotal = 0;  // the run's progress, for the GUI's bar
+  long long runs = 0;                   // runs started (the GUI tells one from the next)
   // The workbench view's last picture without its overlay (rubber bands, the
   // selection), so that a drag redraws only what moves.
   std::unique_ptr<render::DrawList> viewList;
