@@ -119,8 +119,6 @@ proc ::sf::gui::menus {} {
     $m.view add command -label "Zoom to fit" -accelerator F -command ::sf::gui::view::fit
     $m.view add command -label "Zoom in" -accelerator + -command {::sf::gui::zoomCentre 1.25}
     $m.view add command -label "Zoom out" -accelerator - -command {::sf::gui::zoomCentre 0.8}
-    $m.view add separator
-    $m.view add command -label "tkcon console window" -command ::sf::gui::openTkcon
 
     menu $m.run
     $m add cascade -label Run -underline 0 -menu $m.run
@@ -296,14 +294,6 @@ proc ::sf::gui::exportMovie {} {
     set every [askString "Movie" "A frame every how many steps?" 10]
     if {$every eq ""} return
     catch {do [list output movie $file -every $every]}
-}
-
-proc ::sf::gui::openTkcon {} {
-    if {[catch {package require tkcon} err]} {
-        showError "tkcon is not installed: $err"
-        return
-    }
-    tkcon show
 }
 
 proc ::sf::gui::showReference {} {
