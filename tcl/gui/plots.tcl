@@ -30,7 +30,7 @@ proc ::sf::gui::plots::create {path} {
     ttk::combobox $path.bar.series -state readonly -values $labels -width 22
     $path.bar.series set [dict get $choices kinetic]
     ::bind $path.bar.series <<ComboboxSelected>> ::sf::gui::plots::choose
-    ttk::button $path.bar.clear -text Clear -command ::sf::gui::plots::clear -width 6
+    ttk::button $path.bar.clear -text Clear -command ::sf::gui::plots::clear
     ttk::button $path.bar.save -text "Save PNG\u2026" -command ::sf::gui::plots::saveDialog
     pack $path.bar.l $path.bar.series -side left -padx 2
     pack $path.bar.save $path.bar.clear -side right -padx 2
