@@ -156,7 +156,9 @@ proc ::sf::gui::runbar::tick {} {
         set end [clock microseconds]
         set cost [expr {($end - $t0) / 1000.0}]
         set frameCost [lrange [lappend frameCost $cost] end-49 end]
-        set period [expr {max(1000.0 / max(1, min(60, $fps)), $cost * (1 - $budget) / $budget)}]
+        # A frame rate being typed (not a number yet) counts as the default.
+        set rate [expr {[string is double -strict $fps] ? max(1, min(60, $fps)) : 20}]
+        set period [expr {max(1000.0 / $rate, $cost * (1 - $budget) / $budget)}]
         set nextFrame [expr {$end / 1000 + round($period)}]
     }
     # Serve the window: clicks, keys, typing at the console, `after` scripts.
