@@ -24,14 +24,34 @@ proc demState {} {
 }
 
 # Runs each command of `commands` (a list of scripts) that must fail; returns
-# the ones that were accepted ("accepted: ...") or that changed the scene.
+# the ones that were accepted ("accepted: ..."), that failed without a
+# refusal's errorCode ("bad errorCode: ...") or that changed the scene. A
+# refusal sets errorCode to SANDFLOW <CLASS> <DETAIL> (docs/commands.md,
+# Conventions), or Tcl's own code for wrong arguments (TCL WRONGARGS), a bad
+# option or subcommand (TCL LOOKUP ...), a bad value (TCL VALUE ...) or an
+# integer out of range (ARITH IOVERFLOW, which Tcl_GetIntFromObj sets and
+# src/tcl/args.cpp's getInt repeats for what an int cannot hold: the one code
+# of Tcl's own outside TCL). An error that leaves errorCode NONE
+# or unset is a script error (a typo in the test, a missing command) or a
+# product bug, not a refusal, so it does not count as one.
 proc refusedChangeNothing {commands} {
     set problems {}
     foreach command $commands {
         set before [demState]
-        if {![catch {uplevel 1 $command} message]} {
+        if {![catch {uplevel 1 $command} message options]} {
             lappend problems "accepted: $command"
-        } elseif {[demState] ne $before} {
+            continue
+        }
+        set code [expr {[dict exists $options -errorcode]
+                        ? [dict get $options -errorcode] : ""}]
+        # Tcl's codes for an unknown command or an unset variable are the
+        # test's own errors, not a refusal.
+        if {([lindex $code 0] ni {SANDFLOW TCL} && [lrange $code 0 1] ne {ARITH IOVERFLOW})
+                || [llength $code] < 2
+                || [lrange $code 0 2] in {{TCL LOOKUP COMMAND} {TCL LOOKUP VARNAME}}} {
+            lappend problems "bad errorCode \"$code\": $command ($message)"
+        }
+        if {[demState] ne $before} {
             lappend problems "changed the scene: $command ($message)"
         }
     }

@@ -186,6 +186,25 @@ TEST(SceneBuilder, ArrowsAndStreamlinesStayWithinTheWindow) {
   v.vectors = v.streamlines = true;
   v.region = std::array{0.4, 0.4, 0.41, 0.41};  // 2.56 nodes across
   const DrawList list = buildScene(m, v, 1);
+  ViewOptions arrowsOnly = v, streamlinesOnly = v;
+  arrowsOnly.streamlines = false;
+  streamlinesOnly.vectors = false;
+  const DrawList arrows = buildScene(m, arrowsOnly, 1);
+  const DrawList lines = buildScene(m, streamlinesOnly, 1);
+  // Zoomed in, the arrow grid is every node: the nodes (i + 1/2)/256 for
+  // i = 102, 103, 104 lie in [0.4, 0.41] on each axis, 3 x 3 arrows of three
+  // strokes (shaft and two barbs); the 4 x 4 around them bound it above.
+  EXPECT_GE(arrows.fieldStrokes.size(), 27u);
+  EXPECT_LE(arrows.fieldStrokes.size(), 48u);
+  // Streamlines stop about 44 pixels from their neighbours and are seeded in
+  // any empty space, so the window (561 x 561 pixels) is covered by lines at
+  // most about 44 pixels apart: at least area / 44 pixels of line (measured
+  // 13,258, lines about 24 pixels apart). Half as many lines would fail.
+  const Rect& window = lines.viewport;
+  double length = 0;
+  for (const Stroke& s : lines.fieldStrokes) length += std::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
+  EXPECT_GE(length, (window.x1 - window.x0) * (window.y1 - window.y0) / 44.0);
+  EXPECT_EQ(list.fieldStrokes.size(), arrows.fieldStrokes.size() + lines.fieldStrokes.size());
   EXPECT_LE(list.fieldStrokes.size(), 20000u);
   const Rect& port = list.viewport;
   const float margin = 0.6f * (port.x1 - port.x0);  // a node and an arrow's reach
