@@ -55,7 +55,7 @@ Tcl_Obj* geometry(const render::WorldWindow& w, int height) {
 //   box x0 y0 x1 y1 | circle cx cy r | line x y x y ... | closed x y x y ...
 // drawn as 2-pixel strokes over the elements (rubber bands, the selection,
 // a shape being drawn).
-bool addOverlay(Tcl_Interp* interp, Tcl_Obj* items, const render::WorldWindow& w,
+bool addOverlay(Tcl_Interp* interp, Tcl_Obj* items, const render::WorldWindow& w, float width,
                 render::DrawList& list) {
   static const char* const kinds[] = {"box", "circle", "line", "closed", nullptr};
   int n = 0;
@@ -101,7 +101,7 @@ bool addOverlay(Tcl_Interp* interp, Tcl_Obj* items, const render::WorldWindow& w
     }
     const std::size_t last = closed ? points.size() : points.size() - 1;
     for (std::size_t q = 0; q < last; ++q)
-      list.worldStrokes.push_back({points[q], points[(q + 1) % points.size()], 2.0f, colour});
+      list.worldStrokes.push_back({points[q], points[(q + 1) % points.size()], width, colour});
   }
   return true;
 }
@@ -137,7 +137,7 @@ int Draw(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc == 6 && !getBool(interp, objv[5], "reuse", reuse)) return TCL_ERROR;
   render::DrawList list;
   if (!frameList(interp, s, v, reuse, list)) return TCL_ERROR;
-  if (objc >= 5 && !addOverlay(interp, objv[4], list.world, list)) return TCL_ERROR;
+  if (objc >= 5 && !addOverlay(interp, objv[4], list.world, 2.0f, list)) return TCL_ERROR;
   return guarded(interp, [&] {
     drawIntoCurrentContext(list);
     Tcl_SetObjResult(interp, geometry(list.world, v.height));
@@ -161,7 +161,8 @@ int Picture(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
     return TCL_OK;
   });
   if (code != TCL_OK) return code;
-  if (objc == 5 && !addOverlay(interp, objv[4], list.world, list)) return TCL_ERROR;
+  // Two pixels wide after the picture is halved, as in the view.
+  if (objc == 5 && !addOverlay(interp, objv[4], list.world, 4.0f, list)) return TCL_ERROR;
   return guarded(interp, [&] {
     const render::Image image = render::halve(renderOffscreen(list));
     const std::string header =
