@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "sandflow/lb/kernel_isa.hpp"
+#include "sandflow/core/kernel_isa.hpp"
 
 namespace sf::dem::detail {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "sandflow/lb/collision.hpp"
-#include "sandflow/lb/kernel_isa.hpp"
+#include "sandflow/core/kernel_isa.hpp"
 #include "sandflow/lb/node.hpp"
 
 namespace sf::lb {

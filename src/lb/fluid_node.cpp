@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "sandflow/core/prefetch.hpp"
-#include "sandflow/lb/kernel_isa.hpp"
+#include "sandflow/core/kernel_isa.hpp"
 #include "sandflow/lb/node.hpp"
 
 namespace sf::lb {

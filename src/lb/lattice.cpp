@@ -493,7 +493,7 @@ ObstacleInfo Lattice::obstacleInfo(int id) const {
                          [&](const RectObstacle& o) { return o.id == id; });
   if (it == obstacles_.end())
     throw Error("LOOKUP OBSTACLE", "no obstacle with id " + std::to_string(id));
-  info.shape = *it;
+  info.rect = *it;
   const Vec2 centre = 0.5 * (it->lo + it->hi);
   for (int j = 0; j < p_.ny; ++j)
     for (int i = 0; i < p_.nx; ++i) {

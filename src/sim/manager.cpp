@@ -98,8 +98,9 @@ void Manager::setStepping(std::optional<double> dt, std::optional<int> substeps)
 }
 
 void Manager::setThreads(int threads) {
-  if (threads < 1)
-    throw Error("VALUE THREADS", "-threads must be >= 1, got " + std::to_string(threads));
+  if (threads < 1 || threads > kMaxThreads)
+    throw Error("VALUE THREADS", "the thread count must be 1 to " + std::to_string(kMaxThreads) +
+                                     ", got " + std::to_string(threads));
   threads_ = threads;
   assembly_.threads = threads;
   if (lattice_) lattice_->setThreads(threads);

@@ -527,12 +527,12 @@ int ObstacleInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
                                         {"torque", newDouble(o.torque)}}));
       return TCL_OK;
     }
-    Tcl_Obj* rect[4] = {newDouble(o.shape.lo.x()), newDouble(o.shape.lo.y()),
-                        newDouble(o.shape.hi.x()), newDouble(o.shape.hi.y())};
-    Tcl_SetObjResult(interp, newDict({{"id", Tcl_NewIntObj(o.shape.id)},
+    Tcl_Obj* rect[4] = {newDouble(o.rect.lo.x()), newDouble(o.rect.lo.y()),
+                        newDouble(o.rect.hi.x()), newDouble(o.rect.hi.y())};
+    Tcl_SetObjResult(interp, newDict({{"id", Tcl_NewIntObj(o.rect.id)},
                                       {"type", Tcl_NewStringObj("rect", -1)},
                                       {"rect", Tcl_NewListObj(4, rect)},
-                                      {"slip", Tcl_NewBooleanObj(o.shape.slip)},
+                                      {"slip", Tcl_NewBooleanObj(o.rect.slip)},
                                       {"nodes", Tcl_NewWideIntObj(Tcl_WideInt(o.nodes))},
                                       {"force", newVec2(o.force)},
                                       {"torque", newDouble(o.torque)}}));

@@ -174,9 +174,10 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
         } else {
           int n = 0;
           if (!getInt(interp, v, "-threads", n)) return false;
-          if (n < 1 || n > 1024)
+          if (n < 1 || n > sim::Manager::kMaxThreads)
             return reject(interp, "VALUE THREADS",
-                          "-threads must be 1 to 1024, got " + std::to_string(n));
+                          "-threads must be 1 to " + std::to_string(sim::Manager::kMaxThreads) +
+                              ", got " + std::to_string(n));
           threads = n;
         }
         return true;

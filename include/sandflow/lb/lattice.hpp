@@ -40,7 +40,7 @@ struct CircleObstacle {
 
 struct ObstacleInfo {
   bool circle = false;  // which of the two shapes is filled in
-  RectObstacle shape;
+  RectObstacle rect;
   CircleObstacle disc;
   std::size_t nodes = 0;      // solid nodes (rect) or covered cells (circle)
   Vec2 force = Vec2::Zero();  // force per unit thickness the fluid exerts on it

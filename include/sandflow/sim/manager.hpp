@@ -42,6 +42,8 @@ class Manager {
   // step dt / substeps must stay under their critical step. Refuses before
   // changing anything.
   void setStepping(std::optional<double> dt, std::optional<int> substeps);
+  // The thread counts a step may use (sim configure -threads checks the same).
+  static constexpr int kMaxThreads = 1024;
   int threads() const { return threads_; }
   void setThreads(int threads);
 
