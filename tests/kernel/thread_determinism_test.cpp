@@ -17,6 +17,7 @@
 
 #include "coupled_helpers.hpp"
 #include "lattice_helpers.hpp"
+#include "sandflow/core/error.hpp"
 #include "sandflow/lb/node.hpp"
 
 namespace sf {
@@ -333,4 +334,18 @@ TEST(ThreadDeterminism, DemBedAboveParallelThresholds) {
 }
 
 }  // namespace
+
+// The kernel keeps the thread count in its range itself (sim configure checks
+// the same constant first); a refused count leaves the one in force.
+TEST(ThreadDeterminism, ThreadCountOutsideItsRangeIsRefused) {
+  sim::Manager m;
+  m.setThreads(2);
+  for (const int bad : {0, -1, sim::Manager::kMaxThreads + 1}) {
+    EXPECT_THROW(m.setThreads(bad), Error) << bad;
+    EXPECT_EQ(m.threads(), 2);
+  }
+  m.setThreads(sim::Manager::kMaxThreads);
+  EXPECT_EQ(m.threads(), sim::Manager::kMaxThreads);
+}
+
 }  // namespace sf
