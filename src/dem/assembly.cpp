@@ -214,7 +214,7 @@ const std::vector<Contact>& Assembly::contacts() const {
     c.a = l.a[k], c.b = l.b[k], c.idA = l.idA[k], c.idB = l.idB[k];
     c.touching = h.touching[k] != 0;
     c.discs = l.discs[k] != 0;
-    c.damping = l.damping[k];
+    c.dampingPart = l.dampingPart[k];
     c.normal = Vec2(h.nx[k], h.ny[k]);
     c.shear = c.touching ? Vec2(h.sx[k], h.sy[k]) : Vec2::Zero();
     c.point = Vec2(l.px[k], l.py[k]);
@@ -367,7 +367,7 @@ void Assembly::prepareContact(ContactList& l, std::size_t k) const {
   // sqrt(m_eff kn) for the linear law, 2 zeta sqrt(m_eff) for Hertz, whose kn
   // changes with the overlap.
   const double meff = 1.0 / (b.invMass[i] + b.invMass[j]);
-  l.damping[k] = law.damping >= 0 ? law.damping
+  l.dampingPart[k] = law.damping >= 0 ? law.damping
                                   : 2.0 * law.zeta * std::sqrt(meff * (law.hertz ? 1.0 : law.kn));
   l.minSize[k] = std::min(b.extent[i], b.extent[j]);
   l.radius[k] = effectiveRadius(i, j);

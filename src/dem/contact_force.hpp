@@ -39,10 +39,10 @@ struct ContactInputs {
 // One touching contact: the manifold, the two bodies' centres and motion, the
 // law and the history.
 struct LawInput {
-  double nx, ny, overlap, px, py;  // unit normal a -> b, overlap > 0, point
-  double xi, yi, vix, viy, wi;     // body a
-  double xj, yj, vjx, vjy, wj;     // body b
-  double kn, ks, friction, damping, dt;
+  double nx, ny, overlap, px, py;            // unit normal a -> b, overlap > 0, point
+  double xi, yi, vix, viy, wi;               // body a
+  double xj, yj, vjx, vjy, wj;               // body b
+  double kn, ks, friction, dampingPart, dt;  // dampingPart: see ContactList
   bool hertz;  // then: R*, E*, G* and whether the damping is fixed (else from zeta)
   double radius, youngs, shearModulus;
   bool fixedDamping;
@@ -62,13 +62,13 @@ struct LawOutput {
   const double vry = (c.vjy + c.wj * rjx) - (c.viy + c.wi * rix);
   const double vn = vrx * c.nx + vry * c.ny;
   const double vtx = vrx - vn * c.nx, vty = vry - vn * c.ny;
-  double kn = c.kn, ks = c.ks, fElastic = c.kn * c.overlap, cn = c.damping;
+  double kn = c.kn, ks = c.ks, fElastic = c.kn * c.overlap, cn = c.dampingPart;
   if (c.hertz) {  // stiffnesses grow with the contact radius sqrt(R* d)
     const double root = std::sqrt(c.radius * c.overlap);
     fElastic = 4.0 / 3.0 * c.youngs * root * c.overlap;
     kn = 2.0 * c.youngs * root;
     ks = 8.0 * c.shearModulus * root;
-    if (!c.fixedDamping) cn = c.damping * std::sqrt(kn);  // 2 zeta sqrt(m* kn)
+    if (!c.fixedDamping) cn = c.dampingPart * std::sqrt(kn);  // 2 zeta sqrt(m* kn)
   }
   const double fn = fElastic - cn * vn;  // along the normal, on b
 
@@ -110,7 +110,8 @@ struct LawOutput {
   LawInput c;
   c.xi = in.x[i].x(), c.yi = in.x[i].y(), c.vix = in.v[i].x(), c.viy = in.v[i].y(), c.wi = in.w[i];
   c.xj = in.x[j].x(), c.yj = in.x[j].y(), c.vjx = in.v[j].x(), c.vjy = in.v[j].y(), c.wj = in.w[j];
-  c.kn = law.kn, c.ks = law.ks, c.friction = law.friction, c.damping = l.damping[k], c.dt = in.dt;
+  c.kn = law.kn, c.ks = law.ks, c.friction = law.friction, c.dampingPart = l.dampingPart[k],
+  c.dt = in.dt;
   c.hertz = law.hertz, c.radius = l.radius[k], c.youngs = law.effectiveYoungs;
   c.shearModulus = law.effectiveShear, c.fixedDamping = law.damping >= 0;
   c.touching = h.touching[k] != 0;

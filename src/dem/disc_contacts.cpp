@@ -15,7 +15,7 @@ std::size_t linearDiscContacts(ContactList& l, std::size_t begin, std::size_t en
   const double* __restrict r = in.reach;
   const double* __restrict kn = laws.kn, * __restrict ks = laws.ks, * __restrict friction = laws.friction;
   const int* __restrict pa = l.a.data(), * __restrict pb = l.b.data(), * __restrict law = l.law.data();
-  const double* __restrict damping = l.damping.data();
+  const double* __restrict dampingPart = l.dampingPart.data();
   const ContactHistory& h = l.history[l.current];
   ContactHistory& next = l.history[1 - l.current];
   const std::int32_t* __restrict touching = h.touching.data();
@@ -48,7 +48,8 @@ std::size_t linearDiscContacts(ContactList& l, std::size_t begin, std::size_t en
     c.vix = v[2 * i], c.viy = v[2 * i + 1], c.wi = w[i];
     c.vjx = v[2 * j], c.vjy = v[2 * j + 1], c.wj = w[j];
     const int lk = law[k];
-    c.kn = kn[lk], c.ks = ks[lk], c.friction = friction[lk], c.damping = damping[k], c.dt = dt;
+    c.kn = kn[lk], c.ks = ks[lk], c.friction = friction[lk], c.dampingPart = dampingPart[k],
+    c.dt = dt;
     c.hertz = false, c.radius = 0, c.youngs = 0, c.shearModulus = 0, c.fixedDamping = true;
     c.touching = touching[k] != 0;
     c.onx = onx[k], c.ony = ony[k], c.osx = osx[k], c.osy = osy[k];

@@ -230,17 +230,17 @@ TEST(DemContact, DampingFollowsMaterialAndMassChanges) {
   a.step(dt, Vec2::Zero());
   ASSERT_EQ(a.contacts().size(), 1u);
   ASSERT_TRUE(a.contacts()[0].touching);
-  EXPECT_NEAR(a.contacts()[0].damping, expected(0.5, 2650), 1e-12);
+  EXPECT_NEAR(a.contacts()[0].dampingPart, expected(0.5, 2650), 1e-12);
   Material m = a.materials()[1];
   m.restitution = 0.1;
   a.materials().replace(1, m);
   a.step(dt, Vec2::Zero());
-  EXPECT_NEAR(a.contacts()[0].damping, expected(0.1, 2650), 1e-12);
+  EXPECT_NEAR(a.contacts()[0].dampingPart, expected(0.1, 2650), 1e-12);
   m.density = 1000;
   a.materials().replace(1, m);
   a.updateMass(0), a.updateMass(1);
   a.step(dt, Vec2::Zero());
-  EXPECT_NEAR(a.contacts()[0].damping, expected(0.1, 1000), 1e-12);
+  EXPECT_NEAR(a.contacts()[0].dampingPart, expected(0.1, 1000), 1e-12);
 }
 
 }  // namespace

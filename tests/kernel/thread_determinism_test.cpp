@@ -117,7 +117,7 @@ void hashAssembly(const dem::Assembly& a, StateHash& s) {
   s.part("contact pairs", [&](Fnv& f) {
     f.add(std::int64_t(c.size())), f.add(std::int64_t(c.vectorCount));
     f.add(c.a), f.add(c.b), f.add(c.idA), f.add(c.idB), f.add(c.discs), f.add(c.law);
-    f.add(c.damping), f.add(c.minSize), f.add(c.radius);
+    f.add(c.dampingPart), f.add(c.minSize), f.add(c.radius);
   });
   s.part("contact history", [&](Fnv& f) {
     const dem::ContactHistory& h = c.now();

@@ -41,7 +41,7 @@ struct Contact {
   Vec2 shear = Vec2::Zero();  // tangential spring force on b (history)
   bool touching = false;
   bool discs = false;
-  double damping = 0;  // normal damping coefficient (see Assembly::prepareContact)
+  double dampingPart = 0;  // the normal damping's cached part (see ContactList)
   Vec2 normal = Vec2::Zero(), point = Vec2::Zero();
   double overlap = 0.0;
   Vec2 force = Vec2::Zero();  // total contact force on b (on a: the opposite)
@@ -142,7 +142,7 @@ class Assembly {
 
  private:
   void computeForces(double dt, const Vec2& gravity, bool commit);
-  // Fills contact k's cached law, damping, size and radius.
+  // Fills contact k's cached law, damping part, size and radius.
   void prepareContact(ContactList& l, std::size_t k) const;
   // Whether the pair-law table or the contacts' caches are out of date (the
   // pair list is then built again).

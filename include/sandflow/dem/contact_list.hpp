@@ -27,10 +27,13 @@ struct ContactList {
   std::vector<std::uint8_t> discs;
   // Cached from the elements and materials until either changes (see
   // Assembly::prepareContact): the pair's law in the step's table, the normal
-  // damping coefficient, the smaller element's contact size and the effective
-  // radius of curvature (Hertz).
+  // damping's cached part (dampingPart: the coefficient c_n itself for the
+  // linear law or a fixed -damping; 2 zeta sqrt(m*) for Hertz with a
+  // restitution, whose c_n is that times sqrt(kn), kn changing with the
+  // overlap), the smaller element's contact size and the effective radius of
+  // curvature (Hertz).
   std::vector<int> law;
-  std::vector<double> damping, minSize, radius;
+  std::vector<double> dampingPart, minSize, radius;
   ContactHistory history[2];
   int current = 0;  // the history in force
   // The last evaluation: force on b (on a: the opposite), point, overlap, and
