@@ -367,8 +367,9 @@ void Assembly::prepareContact(ContactList& l, std::size_t k) const {
   // sqrt(m_eff kn) for the linear law, 2 zeta sqrt(m_eff) for Hertz, whose kn
   // changes with the overlap.
   const double meff = 1.0 / (b.invMass[i] + b.invMass[j]);
-  l.dampingPart[k] = law.damping >= 0 ? law.damping
-                                  : 2.0 * law.zeta * std::sqrt(meff * (law.hertz ? 1.0 : law.kn));
+  l.dampingPart[k] = law.damping >= 0
+                         ? law.damping
+                         : 2.0 * law.zeta * std::sqrt(meff * (law.hertz ? 1.0 : law.kn));
   l.minSize[k] = std::min(b.extent[i], b.extent[j]);
   l.radius[k] = effectiveRadius(i, j);
 }

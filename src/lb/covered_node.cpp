@@ -7,8 +7,8 @@
 #include <cstring>
 #include <vector>
 
-#include "sandflow/lb/collision.hpp"
 #include "sandflow/core/kernel_isa.hpp"
+#include "sandflow/lb/collision.hpp"
 #include "sandflow/lb/node.hpp"
 
 namespace sf::lb {

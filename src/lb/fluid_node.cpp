@@ -6,8 +6,8 @@
 #include <chrono>
 #include <vector>
 
-#include "sandflow/core/prefetch.hpp"
 #include "sandflow/core/kernel_isa.hpp"
+#include "sandflow/core/prefetch.hpp"
 #include "sandflow/lb/node.hpp"
 
 namespace sf::lb {

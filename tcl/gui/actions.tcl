@@ -163,7 +163,8 @@ proc ::sf::gui::pick {x y tol} {
         if {$type eq "wall"} {
             set info [element info $id]
             set d [segmentDistance $x $y {*}[dict get $info from] {*}[dict get $info to]]
-            if {$d > $tol + 2 * $tol} continue
+            # A wall is a line: a little more slack than for a body with area.
+            if {$d > 3 * $tol} continue
         } else {
             set d [expr {hypot($x - $cx, $y - $cy)}]
             if {$d > $reach + $tol} continue

@@ -153,7 +153,7 @@ proc ::sf::gui::tools::press {px py state} {
                 if {hypot($fx - $px, $fy - $py) < 8} { closePolygon; return }
             }
             lappend vertices {*}$p
-            showPolygon $p
+            showPolygon
             return
         }
         select {
@@ -369,7 +369,7 @@ proc ::sf::gui::tools::nextObstacle {} {
     expr {[llength $ids] ? [tcl::mathfunc::max {*}$ids] + 1 : 1}
 }
 
-proc ::sf::gui::tools::showPolygon {{p {}}} {
+proc ::sf::gui::tools::showPolygon {} {
     variable vertices
     variable preview
     set items [list [list line $preview {*}$vertices]]
