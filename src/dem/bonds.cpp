@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "sandflow/core/error.hpp"
+#include "sandflow/core/memory.hpp"
 #include "sandflow/dem/assembly.hpp"
 
 namespace sf::dem {
@@ -95,7 +96,9 @@ int Assembly::bondAll(const std::vector<int>& ids, double gap) {
   Dess sorter;
   std::vector<std::pair<int, int>> pairs;
   sorter.findPairs(boxes, pairs);
-  int made = 0;
+  // The pairs to bond, found first so that a gap that would bond far too
+  // many is refused before any bond is made.
+  std::vector<std::pair<int, int>> chosen;
   for (const auto& [i, j] : pairs) {
     const int a = slots[i], b = slots[j];
     const int idA = bodies_.id[a], idB = bodies_.id[b];
@@ -107,10 +110,15 @@ int Assembly::bondAll(const std::vector<int>& ids, double gap) {
     if (bonded || immovable || !canCollide(bodies_.shape[a]->type(), bodies_.shape[b]->type()) ||
         !closestPoints(a, b, gap, pa, pb))
       continue;
-    bond(std::min(idA, idB), std::max(idA, idB));
-    ++made;
+    chosen.emplace_back(std::min(idA, idB), std::max(idA, idB));
   }
-  return made;
+  // A step keeps a second copy of the bonds (the ones that hold).
+  const double total = double(bonds_.size() + chosen.size());
+  checkMemory(2 * total * sizeof(Bond), "bonding " + std::to_string(chosen.size()) +
+                                            " more pairs (" + formatNumber(total) +
+                                            " bonds in all)");
+  for (const auto& [idA, idB] : chosen) bond(idA, idB);
+  return int(chosen.size());
 }
 
 void Assembly::unbond(int bondId) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sandflow/core/error.hpp"
+#include "sandflow/dem/shape_checks.hpp"
 
 namespace sf::dem {
 
@@ -60,30 +61,20 @@ std::vector<Vec2> clip(const std::vector<Vec2>& subject, const std::vector<Vec2>
 }  // namespace geometry
 
 Polygon Polygon::fromVertices(std::vector<Vec2> v, Vec2& centroid) {
-  if (v.size() < 3) throw Error("VALUE VERTICES", "a polygon needs at least 3 vertices");
-  for (const Vec2& p : v)
-    if (!p.allFinite()) throw Error("VALUE VERTICES", "polygon vertices must be finite");
+  checkConvexOutline(v);  // simple and convex, or the reason why not
   double area = geometry::signedArea(v);
   if (area < 0) {
     std::reverse(v.begin(), v.end());
     area = -area;
   }
-  double extent = 0;
-  for (const Vec2& p : v) extent = std::max(extent, (p - v[0]).norm());
-  if (!(area > 1e-12 * extent * extent))
-    throw Error("VALUE VERTICES", "polygon has no area (are the vertices on one line?)");
-  const std::size_t n = v.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 e1 = v[(i + 1) % n] - v[i], e2 = v[(i + 2) % n] - v[(i + 1) % n];
-    if (e1.x() * e2.y() - e1.y() * e2.x() < -1e-12 * extent * extent)
-      throw Error("VALUE VERTICES",
-                  "polygon is not convex at vertex " + std::to_string((i + 1) % n + 1));
-    if (e1.norm() <= 1e-12 * extent)
-      throw Error("VALUE VERTICES", "polygon has repeated vertex " + std::to_string(i + 1));
-  }
-  Polygon poly;
   centroid = geometry::centroid(v);
   for (Vec2& p : v) p -= centroid;
+  return fromCentred(std::move(v), area);
+}
+
+Polygon Polygon::fromCentred(std::vector<Vec2> v, double area) {
+  const std::size_t n = v.size();
+  Polygon poly;
   poly.vertices_ = v;
   poly.area_ = area;
   // Polar second moment of area about the centroid, by triangles from it.

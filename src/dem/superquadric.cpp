@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "sandflow/core/error.hpp"
+#include "sandflow/dem/shape_checks.hpp"
 
 namespace sf::dem {
 namespace {
@@ -27,11 +28,8 @@ double powAbs(double u, double e) {
 
 Superquadric::Superquadric(double a, double b, double m, double n, int samples)
     : a_(a), b_(b), m_(m), n_(n) {
-  if (!(a > 0 && b > 0) || !std::isfinite(a) || !std::isfinite(b))
-    throw Error("VALUE AXES", "superquadric axes must be > 0");
-  if (!(m >= 1 && n >= 1) || !std::isfinite(m) || !std::isfinite(n))
-    throw Error("VALUE EXPONENTS", "superquadric exponents must be >= 1 (convex), got {" +
-                                       formatNumber(m) + " " + formatNumber(n) + "}");
+  checkSemiAxes(a, b, "superquadric");
+  checkExponents(m, n);
   if (samples < 8 || samples > 100000)
     throw Error("VALUE SIDES",
                 "superquadric samples must be 8 to 100000, got " + std::to_string(samples));

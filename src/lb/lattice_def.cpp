@@ -1,12 +1,11 @@
 #include "sandflow/lb/lattice_def.hpp"
 
-#include <unistd.h>
-
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 
 #include "sandflow/core/error.hpp"
+#include "sandflow/core/memory.hpp"
 
 namespace sf::lb {
 namespace {
@@ -31,20 +30,38 @@ std::string roundedLength(double v) {
   return buffer;
 }
 
-// Whole number of spacings in `length`, or an error naming both values.
-int wholeCells(double length, double h, const char* what) {
+// Whole number of spacings in `length`, or an error naming both values. A
+// double: the count may be far beyond an int until the memory check refuses it.
+double wholeCells(double length, double h, const char* what) {
   const double n = std::round(length / h);
+  if (!std::isfinite(n))
+    throw Error("VALUE SPACING", "spacing " + formatNumber(h) + " is too small for a " + what +
+                                     " of " + formatNumber(length) +
+                                     ": the count of cells overflows");
   if (n < 1 || std::abs(n * h - length) > 1e-9 * std::max(length, h))
     throw Error("VALUE SIZE", std::string("-size ") + what + " " + formatNumber(length) +
                                   " is not a whole number of spacings (h = " + formatNumber(h) +
                                   "): use " + roundedLength(std::max(1.0, n) * h));
-  if (n > 1e9) throw Error("VALUE SIZE", std::string("lattice ") + what + " too large");
-  return static_cast<int>(n);
+  return n;
 }
 
-double physicalMemoryBytes() {
-  const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && pageSize > 0 ? static_cast<double>(pages) * pageSize : 0.0;
+// A node count as a user would write it: 100000, or 1e+12 when that long.
+std::string count(double n) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, n < 1e15 ? "%.0f" : "%.3g", n);
+  return buffer;
+}
+
+// Refuses a lattice that would not fit in memory, or whose populations (nine
+// per node, padded) a 32-bit link index could not reach, before anything is
+// allocated or narrowed to int.
+void checkNodeCount(double nx, double ny) {
+  const double nodes = (nx + 2) * (ny + 2);
+  const std::string lattice = "a " + count(nx) + " x " + count(ny) + " lattice";
+  checkMemory(nodes * bytesPerNode, lattice);
+  if (nodes * 9 > 2.0e9)
+    throw Error("RESOURCE SIZE", lattice + " has " + count(nodes) + " nodes, more than the " +
+                                     count(2.0e9 / 9) + " one lattice can index");
 }
 
 }  // namespace
@@ -61,26 +78,19 @@ ResolvedLattice resolve(const LatticeDef& def) {
   requirePositive(def.size.y(), "-size");
   if ((def.cells > 0) == (def.spacing > 0.0))
     throw Error("VALUE CELLS", "give exactly one of -cells and -spacing");
+  double nx = def.cells;
   if (def.cells > 0) {
-    r.nx = def.cells;
     r.h = def.size.x() / def.cells;
   } else {
     requirePositive(def.spacing, "-spacing");
     r.h = def.spacing;
-    r.nx = wholeCells(def.size.x(), r.h, "width");
+    nx = wholeCells(def.size.x(), r.h, "width");
   }
-  r.ny = wholeCells(def.size.y(), r.h, "height");
+  const double ny = wholeCells(def.size.y(), r.h, "height");
+  checkNodeCount(nx, ny);
+  r.nx = static_cast<int>(nx);
+  r.ny = static_cast<int>(ny);
   requirePositive(def.density, "-density");
-
-  // Memory: refuse before allocating rather than fail half way.
-  const double nodes = double(r.nx + 2) * double(r.ny + 2);
-  const double bytes = nodes * bytesPerNode;
-  const double available = physicalMemoryBytes();
-  if (nodes * 9 > 2.0e9 || (available > 0 && bytes > 0.8 * available))
-    throw Error("RESOURCE MEMORY",
-                "a " + std::to_string(r.nx) + " x " + std::to_string(r.ny) + " lattice needs " +
-                    formatNumber(std::round(bytes / 1e8) / 10) + " GB, more than this machine's " +
-                    formatNumber(std::round(available / 1e8) / 10) + " GB allows");
 
   // Two of viscosity, tau and timestep give the third: nu = (2 tau - 1)/6 h^2/dt.
   const double h2 = r.h * r.h;

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "sandflow/core/error.hpp"
+#include "sandflow/core/memory.hpp"
 #include "sandflow/lb/lattice.hpp"
 #include "sandflow/render/text.hpp"
 #include "scene_parts.hpp"
@@ -244,6 +245,8 @@ void checkOptions(const ViewOptions& v) {
     throw Error("VALUE SIZE", "-size {W H} must be 1 to " + std::to_string(kMaxPictureSide) +
                                   " pixels each, got {" + std::to_string(v.width) + " " +
                                   std::to_string(v.height) + "}");
+  checkMemory(double(v.width) * v.height * kPictureBytesPerPixel,
+              "a " + std::to_string(v.width) + " x " + std::to_string(v.height) + " picture");
   if (v.region) {
     const auto [x0, y0, x1, y1] = *v.region;
     if (!std::isfinite(x0) || !std::isfinite(y0) || !std::isfinite(x1) || !std::isfinite(y1) ||

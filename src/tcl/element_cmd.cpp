@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "sandflow/dem/polygon.hpp"
+#include "sandflow/dem/shape_checks.hpp"
 #include "sandflow/dem/superquadric.hpp"
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/session.hpp"
@@ -56,7 +57,7 @@ const OptionSpec kAll[] = {
     {"-sides", "N", "sides of the polygon that approximates the ellipse (default 32)"},
     {"-stress", "s",
      "a wall becomes a plate holding stress s (load s x length) on what it presses; {} stops"},
-    {"-exponents", "{m n}", "superquadric exponents, >= 1: |x/a|^m + |y/b|^n = 1"},
+    {"-exponents", "{m n}", "superquadric exponents, 1 to 100: |x/a|^m + |y/b|^n = 1"},
 };
 
 struct Table {
@@ -204,17 +205,10 @@ bool parseEdit(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first, c
         e.vertices = pts;
         return true;
       }
-      case fExponents:
-        if (!getVec2(interp, v, name, p)) return false;
-        if (!(p.x() >= 1 && p.y() >= 1))
-          return reject(interp, "VALUE EXPONENTS", "-exponents must both be >= 1 (convex)");
-        e.exponents = p;
-        return true;
+      case fExponents:  // ranges: the kernel's (shapeOption)
       case fAxes:
         if (!getVec2(interp, v, name, p)) return false;
-        if (!(p.x() > 0 && p.y() > 0))
-          return reject(interp, "VALUE AXES", "-axes must both be > 0");
-        e.axes = p;
+        (f == fAxes ? e.axes : e.exponents) = p;
         return true;
       case fSides: {
         int n = 0;
@@ -255,6 +249,20 @@ void applyCommon(const Edit& e, ElementDef& def) {
   if (e.force) def.force = e.force->head<2>(), def.torque = (*e.force)[2];
   if (e.acceleration) def.acceleration = *e.acceleration;
   if (e.id) def.id = *e.id;
+}
+
+// A kernel check of one option's value (dem/shape_checks.hpp), before any
+// shape is made: its sf::Error becomes the Tcl error, noted "(in OPTION option)".
+template <class Check>
+bool shapeOption(Tcl_Interp* interp, const char* option, Check&& check) {
+  try {
+    check();
+    return true;
+  } catch (const Error& error) {
+    fail(interp, error);
+    noteOptionOnce(interp, option);
+    return false;
+  }
 }
 
 int create(Tcl_Interp* interp, Session& s, ElementDef def) {
@@ -319,10 +327,14 @@ int PolygonCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
   Edit e;
   if (!parseEdit(interp, objc, objv, 1, polygonTable(), s.manager.assembly(), e)) return TCL_ERROR;
   if (!e.vertices) return fail(interp, "VALUE VERTICES", "polygon create needs -vertices");
+  std::optional<dem::Polygon> polygon;
+  Vec2 centroid;
+  if (!shapeOption(interp, "-vertices",
+                   [&] { polygon = dem::Polygon::fromVertices(*e.vertices, centroid); }))
+    return TCL_ERROR;
   return guarded(interp, [&] {
     ElementDef def;
-    Vec2 centroid;
-    def.shape = std::make_unique<dem::Polygon>(dem::Polygon::fromVertices(*e.vertices, centroid));
+    def.shape = std::make_unique<dem::Polygon>(std::move(*polygon));
     def.x = centroid;
     applyCommon(e, def);
     return create(interp, s, std::move(def));
@@ -339,6 +351,9 @@ int EllipseCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
   if (!parseEdit(interp, objc, objv, 1, ellipseTable(), s.manager.assembly(), e)) return TCL_ERROR;
   if (!e.center) return fail(interp, "VALUE CENTER", "ellipse create needs -center {x y}");
   if (!e.axes) return fail(interp, "VALUE AXES", "ellipse create needs -axes {a b}");
+  if (!shapeOption(interp, "-axes",
+                   [&] { dem::checkSemiAxes(e.axes->x(), e.axes->y(), "ellipse"); }))
+    return TCL_ERROR;
   const int n = e.sides.value_or(32);
   std::vector<Vec2> outline;
   for (int k = 0; k < n; ++k) {
@@ -369,6 +384,11 @@ int SuperquadricCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* c
   if (!e.axes) return fail(interp, "VALUE AXES", "superquadric create needs -axes {a b}");
   if (!e.exponents)
     return fail(interp, "VALUE EXPONENTS", "superquadric create needs -exponents {m n}");
+  if (!shapeOption(interp, "-axes",
+                   [&] { dem::checkSemiAxes(e.axes->x(), e.axes->y(), "superquadric"); }) ||
+      !shapeOption(interp, "-exponents",
+                   [&] { dem::checkExponents(e.exponents->x(), e.exponents->y()); }))
+    return TCL_ERROR;
   if (e.sides && *e.sides < 8) {  // the outline samples: the kernel takes no fewer than 8
     fail(interp, "VALUE SIDES",
          "-sides must be 8 to 10000 for a superquadric, got " + std::to_string(*e.sides));

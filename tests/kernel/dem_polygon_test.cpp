@@ -2,13 +2,17 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
+#include <string>
 
 #include "sandflow/core/error.hpp"
 #include "sandflow/dem/assembly.hpp"
 #include "sandflow/dem/polygon.hpp"
+#include "sandflow/dem/shape_checks.hpp"
 
 namespace sf::dem {
 namespace {
@@ -47,11 +51,108 @@ TEST(DemPolygon, ManySidedPolygonApproachesTheEllipse) {
   EXPECT_NEAR(p.inertiaPerMass() / ((a * a + b * b) / 4), 1.0, 1e-3);
 }
 
-TEST(DemPolygon, RejectsBadOutlines) {
-  Vec2 c;
-  EXPECT_THROW(Polygon::fromVertices({{0, 0}, {1, 0}}, c), Error);
-  EXPECT_THROW(Polygon::fromVertices({{0, 0}, {1, 0}, {2, 0}}, c), Error);
-  EXPECT_THROW(Polygon::fromVertices({{0, 0}, {2, 0}, {1, 0.2}, {2, 2}, {0, 2}}, c), Error);
+// "CODE: message" of the refusal of an outline, or "accepted".
+std::string refusal(const std::vector<Vec2>& v) {
+  try {
+    Vec2 c;
+    Polygon::fromVertices(v, c);
+  } catch (const Error& e) {
+    return e.code() + ": " + e.what();
+  }
+  return "accepted";
+}
+
+// The corners of a regular polygon of `n` sides, visited `step` corners apart
+// (step 2 of 5: the pentagram), `rounds` times over.
+std::vector<Vec2> star(int n, int step, int rounds = 1) {
+  std::vector<Vec2> v;
+  for (int k = 0; k < n * rounds; ++k) {
+    const double t = 2 * std::numbers::pi * (k * step % n) / n;
+    v.emplace_back(std::cos(t), std::sin(t));
+  }
+  return v;
+}
+
+TEST(DemPolygon, RefusesTooFewOrNonFiniteVertices) {
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(refusal({{0, 0}, {1, 0}}),
+            "VALUE VERTICES: a polygon needs at least 3 vertices, got 2");
+  EXPECT_EQ(refusal({{0, 0}, {1, 0}, {std::nan(""), 1}}),
+            "VALUE VERTICES: polygon vertex 3 is not finite: {nan 1}");
+  EXPECT_EQ(refusal({{0, 0}, {inf, 0}, {0, 1}}),
+            "VALUE VERTICES: polygon vertex 2 is not finite: {inf 0}");
+  EXPECT_EQ(refusal({{-1e308, 0}, {1e308, 0}, {0, 1}}),
+            "VALUE VERTICES: polygon is too large: its vertices span more than a double holds");
+}
+
+TEST(DemPolygon, RefusesRepeatedAndCollinearVertices) {
+  EXPECT_EQ(refusal({{1, 1}, {1, 1}, {1, 1}}),
+            "VALUE VERTICES: polygon vertices are all one point: it has no area");
+  EXPECT_EQ(refusal({{0, 0}, {1, 0}, {1, 1}, {1, 1}}),
+            "VALUE VERTICES: polygon vertices 3 and 4 are the same point: give each corner once");
+  EXPECT_EQ(refusal({{0, 0}, {1, 0}, {1, 1}, {0, 0}}),
+            "VALUE VERTICES: polygon vertices 4 and 1 are the same point: give each corner once");
+  EXPECT_EQ(refusal({{0, 0}, {1, 0}, {2, 0}}),
+            "VALUE VERTICES: polygon vertices are all on one line: it has no area");
+  // Thinner than 1e-10 of its size is a line too.
+  EXPECT_EQ(refusal({{0, 0}, {1, 0}, {1, 1e-11}, {0, 1e-11}}),
+            "VALUE VERTICES: polygon vertices are all on one line: it has no area");
+  EXPECT_EQ(refusal({{0, 0}, {1, 0}, {2, 0}, {2, 1}}),
+            "VALUE VERTICES: polygon vertex 2 lies on the straight line from vertex 1 to vertex "
+            "3: leave it out");
+  EXPECT_EQ(refusal({{0, 0}, {2, 0}, {1, 0}, {1, 1}}),
+            "VALUE VERTICES: polygon outline doubles back on itself at vertex 2 "
+            "(self-intersecting)");
+}
+
+TEST(DemPolygon, RefusesAConcaveOutlineNamingTheVertexInTheGivenOrder) {
+  EXPECT_EQ(refusal({{0, 0}, {2, 0}, {1, 0.2}, {2, 2}, {0, 2}}),
+            "VALUE VERTICES: polygon is not convex at vertex 3");
+  EXPECT_EQ(refusal({{0, 2}, {2, 2}, {1, 0.2}, {2, 0}, {0, 0}}),  // clockwise
+            "VALUE VERTICES: polygon is not convex at vertex 3");
+}
+
+TEST(DemPolygon, RefusesAnOutlineThatCrossesItself) {
+  EXPECT_EQ(refusal({{0, 0}, {1, 1}, {1, 0}, {0, 1}}),  // a bow tie
+            "VALUE VERTICES: polygon outline crosses itself (self-intersecting): edges 1-2 and "
+            "3-4 meet");
+  // A vertex on an edge that is not its own: the outline touches itself.
+  EXPECT_EQ(refusal({{0, 0}, {4, 0}, {4, 4}, {2, 0}, {0, 4}}),
+            "VALUE VERTICES: polygon outline crosses itself (self-intersecting): edges 1-2 and "
+            "3-4 meet");
+}
+
+// Issue 24: outlines whose turns all go one way but that wind round more than
+// once were taken for convex polygons, with the area of each round added up.
+TEST(DemPolygon, RefusesAnOutlineThatWindsMoreThanOnce) {
+  const std::string twice =
+      "VALUE VERTICES: polygon outline winds 2 times around (self-intersecting): a convex "
+      "outline goes round once";
+  EXPECT_EQ(refusal(star(5, 2)), twice);     // the pentagram, its points in star order
+  EXPECT_EQ(refusal(star(4, 1, 2)), twice);  // a square traced twice
+  std::vector<Vec2> clockwise = star(4, 1, 2);
+  std::reverse(clockwise.begin(), clockwise.end());
+  EXPECT_EQ(refusal(clockwise), twice);
+  EXPECT_EQ(refusal(star(7, 3)),
+            "VALUE VERTICES: polygon outline winds 3 times around (self-intersecting): a convex "
+            "outline goes round once");
+}
+
+TEST(DemPolygon, AcceptsConvexOutlinesOfAnySizeAnywhere) {
+  EXPECT_EQ(refusal(star(5, 1)), "accepted");
+  EXPECT_EQ(refusal(square({1e3, -1e3}, 1e-3, 0.3)), "accepted");
+  EXPECT_EQ(refusal(square({0, 0}, 1e-50)), "accepted");
+  EXPECT_EQ(refusal(square({0, 0}, 1e50)), "accepted");
+  // A needle 1e-9 wide: sharp, but its corners still turn.
+  EXPECT_EQ(refusal({{0, 0}, {1, 0}, {0, 1e-9}}), "accepted");
+  // An ellipse of 10000 sides at the largest axis ratio: its flattest
+  // vertices turn by 6e-10, above the 1e-10 of a straight line.
+  std::vector<Vec2> v;
+  for (int k = 0; k < 10000; ++k) {
+    const double t = 2 * std::numbers::pi * k / 10000;
+    v.emplace_back(kMaxAxisRatio * std::cos(t), std::sin(t));
+  }
+  EXPECT_EQ(refusal(v), "accepted");
 }
 
 // The overlap of two axis-aligned rectangles is known exactly; rotate both by

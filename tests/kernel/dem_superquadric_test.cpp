@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <string>
 
 #include "sandflow/core/error.hpp"
 #include "sandflow/dem/narrow_phase.hpp"
+#include "sandflow/dem/shape_checks.hpp"
 #include "sandflow/dem/superquadric.hpp"
 
 namespace sf::dem {
@@ -34,10 +37,65 @@ TEST(DemSuperquadric, MassPropertiesMatchQuadrature) {
   EXPECT_NEAR(s.inertiaPerMass() / (polar / area), 1.0, 2e-4);
 }
 
-TEST(DemSuperquadric, RefusesBadParameters) {
-  EXPECT_THROW(Superquadric(0, 1, 2, 2, 16), Error);
-  EXPECT_THROW(Superquadric(1, 1, 0.5, 2, 16), Error);
-  EXPECT_THROW(Superquadric(1, 1, 2, 2, 4), Error);
+// "CODE: message" of the refusal of a superquadric, or "accepted".
+std::string refusal(double a, double b, double m, double n, int samples = 16) {
+  try {
+    Superquadric(a, b, m, n, samples);
+  } catch (const Error& e) {
+    return e.code() + ": " + e.what();
+  }
+  return "accepted";
+}
+
+TEST(DemSuperquadric, RefusesSemiAxesThatAreNotFiniteAndPositive) {
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::nan("");
+  const std::string message = "VALUE AXES: superquadric semi-axes must be finite and > 0, got ";
+  EXPECT_EQ(refusal(0, 1, 2, 2), message + "{0 1}");
+  EXPECT_EQ(refusal(1, -1, 2, 2), message + "{1 -1}");
+  EXPECT_EQ(refusal(nan, 1, 2, 2), message + "{nan 1}");
+  EXPECT_EQ(refusal(1, inf, 2, 2), message + "{1 inf}");
+}
+
+TEST(DemSuperquadric, RefusesAxesMoreUnequalThanTheLimit) {
+  EXPECT_EQ(refusal(1, 1e-7, 2, 2),
+            "VALUE AXES: superquadric semi-axes {1 1e-07} differ by a factor of 1e+07: at most "
+            "1e+06 is allowed");
+  EXPECT_EQ(refusal(1e-300, 1e300, 2, 2),
+            "VALUE AXES: superquadric semi-axes {1e-300 1e+300} differ by a factor of inf: at "
+            "most 1e+06 is allowed");
+  EXPECT_EQ(refusal(kMaxAxisRatio, 1, 2, 2), "accepted");
+  EXPECT_EQ(refusal(1, kMaxAxisRatio, 1, 1), "accepted");
+}
+
+TEST(DemSuperquadric, RefusesExponentsOutOfRange) {
+  const std::string message =
+      "VALUE EXPONENTS: superquadric exponents must be 1 to 100 (1 a lozenge, 2 an ellipse, 100 "
+      "nearly a box; below 1 it is not convex), got ";
+  EXPECT_EQ(refusal(1, 1, 0.5, 2), message + "{0.5 2}");
+  EXPECT_EQ(refusal(1, 1, 2, 100.5), message + "{2 100.5}");
+  EXPECT_EQ(refusal(1, 1, std::nan(""), 2), message + "{nan 2}");
+  EXPECT_EQ(refusal(1, 1, 2, std::numeric_limits<double>::infinity()), message + "{2 inf}");
+}
+
+TEST(DemSuperquadric, RefusesTooFewOrTooManySamples) {
+  EXPECT_EQ(refusal(1, 1, 2, 2, 7), "VALUE SIDES: superquadric samples must be 8 to 100000, got 7");
+  EXPECT_EQ(refusal(1, 1, 2, 2, 100001),
+            "VALUE SIDES: superquadric samples must be 8 to 100000, got 100001");
+}
+
+// At the ends of every range the mass properties stay exact and the outline
+// finite: the limits are where the shape still works, not beyond.
+TEST(DemSuperquadric, ShapesAtTheLimitsHaveExactMassAndAFiniteOutline) {
+  const Superquadric box(1, 1, kMaxExponent, kMaxExponent, 64);
+  // Area of |x|^m + |y|^m <= 1: 4 Gamma(1 + 1/m)^2 / Gamma(1 + 2/m).
+  const double g = std::tgamma(1 + 1 / kMaxExponent);
+  EXPECT_NEAR(box.area(), 4 * g * g / std::tgamma(1 + 2 / kMaxExponent), 1e-12);
+  EXPECT_GT(box.area(), 3.9);  // nearly the 2 x 2 square
+  const Superquadric needle(kMaxAxisRatio, 1, 2, 2, 64);
+  EXPECT_NEAR(needle.area() / (std::numbers::pi * kMaxAxisRatio), 1.0, 1e-12);
+  EXPECT_NEAR(needle.inertiaPerMass() / ((kMaxAxisRatio * kMaxAxisRatio + 1) / 4), 1.0, 1e-12);
+  for (const Superquadric* s : {&box, &needle})
+    for (const Vec2& p : s->world(Vec2::Zero(), 0)) EXPECT_TRUE(p.allFinite());
 }
 
 // A circular superquadric (a = b, m = n = 2) pressed against a disc from an

@@ -3,9 +3,11 @@
 // the relaxation-time sweep, the interior treatment, the solid-ratio settings,
 // and the transient Stokes layer against a finite-difference reference.
 //
-//   sandflow_validate_couette ?--quick? ?--csv DIR?
+//   sandflow_validate_couette ?--quick|--smoke? ?--csv DIR?
 //
-// Prints tables; with --csv writes them as CSV files for plotting.
+// Prints tables; with --csv writes them as CSV files for plotting. --smoke
+// runs every table on the coarsest lattices, for a check of scripts/validate
+// itself (its numbers mean little).
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -76,20 +78,25 @@ void transient(FILE* csv) {
 
 int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // a line at a time, also into a file
-  bool quick = false;
+  bool quick = false, smoke = false;
   std::string dir;
   for (int k = 1; k < argc; ++k) {
     if (!std::strcmp(argv[k], "--quick"))
       quick = true;
+    else if (!std::strcmp(argv[k], "--smoke"))
+      quick = smoke = true;
     else if (!std::strcmp(argv[k], "--csv") && k + 1 < argc)
       dir = argv[++k];
     else {
-      std::fprintf(stderr, "usage: %s ?--quick? ?--csv DIR?\n", argv[0]);
+      std::fprintf(stderr, "usage: %s ?--quick|--smoke? ?--csv DIR?\n", argv[0]);
       return 2;
     }
   }
-  const std::vector<int> cells =
-      quick ? std::vector<int>{20, 40, 80} : std::vector<int>{20, 40, 80, 160, 320};
+  const std::vector<int> cells = smoke   ? std::vector<int>{20, 40}
+                                 : quick ? std::vector<int>{20, 40, 80}
+                                         : std::vector<int>{20, 40, 80, 160, 320};
+  const int fine = smoke ? 20 : 80;  // the lattice of the tables below
+  const double h = 1.0 / fine;
   FILE* f = csvFile(dir, "couette-stationary.csv", "h,velocity,torque,max,netforce");
   convergence("Stationary cell (outer cylinder at 0.1 rad/s, inner at rest), t = 2.5", Vec2::Zero(),
               cells, f);
@@ -98,17 +105,17 @@ int main(int argc, char** argv) {
   convergence("Translating cell (both cylinders at {0.03 0.015})", Vec2(0.03, 0.015), cells, f);
   if (f) std::fclose(f);
 
-  // Relaxation time at h = 1.25e-2 and c = h/dt = 20, nu from tau.
-  std::printf(
-      "Relaxation-time sweep, h = 1.25e-2, c = 20 (dt = 6.25e-4), nu = (2 tau - 1)/6 h c\n");
+  // Relaxation time at c = h/dt = 20, nu from tau.
+  std::printf("Relaxation-time sweep, h = %.3g, c = 20 (dt = %.3g), nu = (2 tau - 1)/6 h c\n", h,
+              h / 20);
   std::printf("%6s %10s %11s %11s %11s\n", "tau", "nu", "max |du|", "velocity L2", "torque");
   f = csvFile(dir, "couette-tau.csv", "tau,max,velocity,torque");
   for (double tau : {0.55, 0.6, 0.625, 0.65, 0.7, 0.8, 1.0, 1.25, 1.5}) {
     if (quick && tau != 0.625 && tau != 1.0) continue;
     CouetteSetup s;
-    s.cells = 80;
+    s.cells = fine;
     s.tau = tau;
-    s.nu = (2 * tau - 1) / 6 * 1.25e-2 * 20;
+    s.nu = (2 * tau - 1) / 6 * h * 20;
     s.time = 2.5 * 4.166e-2 / s.nu;  // the same number of diffusive times
     const CouetteResult r = runCouette(s);
     std::printf("%6.3f %10.4g %11.3e %11.3e %11.3e\n", tau, s.nu, r.maxError, r.velocityError,
@@ -118,11 +125,11 @@ int main(int argc, char** argv) {
   if (f) std::fclose(f);
   std::printf("\n");
 
-  std::printf("Interior cells (inner cylinder turning at 0.3, outer at rest, 80 cells)\n");
+  std::printf("Interior cells (inner cylinder turning at 0.3, outer at rest, %d cells)\n", fine);
   std::printf("%12s %11s %11s %12s\n", "interior", "velocity L2", "torque", "torque value");
   for (bool eq : {true, false}) {
     CouetteSetup s;
-    s.cells = 80;
+    s.cells = fine;
     s.omega1 = 0.3;
     s.omega2 = 0;
     s.coupling.equilibriumInterior = eq;
@@ -132,14 +139,14 @@ int main(int argc, char** argv) {
   }
   std::printf("\n");
 
-  std::printf("Solid ratio settings (80 cells, stationary cell)\n");
+  std::printf("Solid ratio settings (%d cells, stationary cell)\n", fine);
   std::printf("%10s %11s %11s %8s\n", "solidratio", "velocity L2", "torque", "seconds");
   f = csvFile(dir, "couette-solidratio.csv", "setting,velocity,torque,seconds");
   const int settings[] = {coupling::kExact, 1, 2, 4, 8};
   const char* names[] = {"exact", "1", "2", "4", "8"};
   for (int k = 0; k < 5; ++k) {
     CouetteSetup s;
-    s.cells = 80;
+    s.cells = fine;
     s.coupling.subcells = settings[k];
     const CouetteResult r = runCouette(s);
     std::printf("%10s %11.3e %11.3e %8.2f\n", names[k], r.velocityError, r.torqueError, r.seconds);

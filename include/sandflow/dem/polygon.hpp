@@ -11,8 +11,13 @@ class Polygon final : public Shape {
  public:
   // From vertices in any frame: checks convexity, orders them counter-clockwise
   // and moves the centroid to the origin; `centroid` receives where it was.
-  // Throws sf::Error for fewer than 3 vertices, zero area or a concave outline.
+  // Throws sf::Error, with the reason, unless the outline is simple and convex
+  // (checkConvexOutline, shape_checks.hpp).
   static Polygon fromVertices(std::vector<Vec2> vertices, Vec2& centroid);
+  // From vertices already counter-clockwise about their centroid, and the
+  // area fromVertices found for them: the same polygon, bit for bit, without
+  // moving them again (a checkpoint's; check them with fromVertices first).
+  static Polygon fromCentred(std::vector<Vec2> vertices, double area);
 
   const std::vector<Vec2>& vertices() const { return vertices_; }
   // Vertices in world coordinates for a pose.

@@ -11,7 +11,8 @@ namespace sf::dem {
 
 class Superquadric final : public Shape {
  public:
-  // Throws sf::Error unless a, b > 0, m, n >= 1 (convex) and samples >= 8.
+  // Throws sf::Error unless the semi-axes and exponents pass checkSemiAxes and
+  // checkExponents (shape_checks.hpp) and samples is 8 to 100000.
   Superquadric(double a, double b, double m, double n, int samples);
 
   double a() const { return a_; }

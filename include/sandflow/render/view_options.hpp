@@ -47,5 +47,9 @@ inline Field shownField(const ViewOptions& v, bool hasLattice) {
 
 // Largest picture side: the off-screen buffers' limit with 2x supersampling.
 inline constexpr int kMaxPictureSide = 8192;
+// Peak memory per pixel of a picture while it is taken: drawn 2 x 2
+// supersampled, the GL colour and depth buffers, the read-back and its image
+// (16 bytes each per pixel of the picture), then the halved image.
+inline constexpr double kPictureBytesPerPixel = 4 * 16 + 4;
 
 }  // namespace sf::render
