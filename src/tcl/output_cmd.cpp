@@ -1,11 +1,9 @@
-// output vtk PREFIX, and the verbs that list and close the recorders
-// (output csv and output movie live in their own files).
+// The "output" ensemble: the verbs that list and close the recorders (output
+// vtk, csv and movie live in their own files).
 #include <string>
 #include <vector>
 
 #include "output_verbs.hpp"
-#include "sandflow/io/atomic_files.hpp"
-#include "sandflow/io/vtk.hpp"
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/session.hpp"
 
@@ -16,36 +14,7 @@ Session& sessionOf(ClientData data) {
   return *static_cast<Session*>(data);
 }
 
-int OutputVtk(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (objc != 2) {
-    Tcl_WrongNumArgs(interp, 1, objv, "PREFIX");
-    return TCL_ERROR;
-  }
-  Session& s = sessionOf(data);
-  const std::string prefix = Tcl_GetString(objv[1]);
-  if (prefix.empty()) return fail(interp, "VALUE PREFIX", "PREFIX must not be empty");
-  const bool elements = !s.manager.assembly().empty();
-  if (!s.manager.hasLattice() && !elements)
-    return fail(interp, "LOOKUP SCENE",
-                "nothing to write: the scene has no lattice and no elements");
-  std::vector<io::FileContent> files;
-  if (s.manager.hasLattice())
-    files.push_back({prefix + ".vti",
-                     [&](std::ostream& out) { io::writeLatticeVti(s.manager.lattice(), out); }});
-  if (elements)
-    files.push_back({prefix + ".vtp",
-                     [&](std::ostream& out) { io::writeElementsVtp(s.manager.assembly(), out); }});
-  return guarded(interp, [&] {
-    io::writeAtomically(files);  // both appear, or neither
-    Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
-    for (const io::FileContent& f : files)
-      Tcl_ListObjAppendElement(nullptr, list, newString(f.path));
-    Tcl_SetObjResult(interp, list);
-    return TCL_OK;
-  });
-}
-
-// output list -> {FILE {kind csv every K written N} ...}
+// output list -> {FILE {kind csv|record|movie|vtk every K written N} ...}
 int OutputList(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
     Tcl_WrongNumArgs(interp, 1, objv, nullptr);
@@ -82,7 +51,11 @@ int OutputHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) 
       interp,
       newString(helpText("output",
                          {"vtk PREFIX   -> files written: PREFIX.vti (lattice: density, "
-                          "pressure, velocity, kind) and PREFIX.vtp (elements)",
+                          "pressure, velocity, kind, solid), PREFIX.vtp (elements), "
+                          "PREFIX_bonds.vtp (bonds)",
+                          "vtk PREFIX -every K   -> PREFIX.pvd; from now on the same files as "
+                          "PREFIX_0000, PREFIX_0001, ... every K steps, listed with their "
+                          "times in PREFIX.pvd (open it in ParaView)",
                           "csv FILE -elements IDS ?-every K?   -> FILE; from now on a row "
                           "every K steps: step,time, then per element ID x_ID y_ID "
                           "angle_ID vx_ID vy_ID w_ID fx_ID fy_ID torque_ID fluidfx_ID "
@@ -90,7 +63,7 @@ int OutputHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) 
                           "movie FILE ?-every K? ?-fps n? ?view options?   -> FILE (.mp4, "
                           ".mkv, .mov, .avi, .webm); from now on a frame every K steps, "
                           "piped to ffmpeg; the movie appears when closed",
-                          "list   -> dict FILE {kind csv|record|movie every K written N}",
+                          "list   -> dict FILE {kind csv|record|movie|vtk every K written N}",
                           "close ?FILE?   finish one file being recorded, or all of them", "help"},
                          nullptr)));
   return TCL_OK;

@@ -4,6 +4,8 @@
 
 namespace sf::tcl {
 
+// output vtk PREFIX ?-every K?
+int OutputVtk(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]);
 // output csv FILE -elements IDS ?-every K?
 int OutputCsv(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]);
 // output movie FILE ?-every K? ?-fps n? ?view options?
