@@ -13,12 +13,32 @@
 
 namespace {
 
+// The thesis's command language (docs/thesis-compat.md), loaded in every mode
+// so that the thesis's scripts run unchanged: from $SANDFLOW_COMPAT_DIR, the
+// source tree this program was built from, or beside an installed program.
+constexpr const char* kLoadThesis = R"tcl(
+  set ::sf::thesis::library ""
+  foreach dir [list [expr {[info exists ::env(SANDFLOW_COMPAT_DIR)] ? $::env(SANDFLOW_COMPAT_DIR) : ""}] \
+                   $::sf::thesis::builtFrom \
+                   [file join [file dirname [file dirname [info nameofexecutable]]] share sandflow compat]] {
+    if {$dir ne "" && [file exists [file join $dir thesis.tcl]]} {
+      set ::sf::thesis::library $dir
+      break
+    }
+  }
+  if {$::sf::thesis::library eq ""} { error "the thesis layer's Tcl files (compat/thesis.tcl) were not found" }
+  source [file join $::sf::thesis::library thesis.tcl]
+)tcl";
+
 int appInit(Tcl_Interp* interp) {
   if (Tcl_Init(interp) != TCL_OK) return TCL_ERROR;
   if (Sandflow_Init(interp) != TCL_OK) return TCL_ERROR;
   Tcl_StaticPackage(interp, "sandflow", Sandflow_Init, nullptr);
   Tcl_SetVar(interp, "tcl_rcFileName", "~/.sandflowrc", TCL_GLOBAL_ONLY);
-  return Tcl_Eval(interp, "namespace import ::sf::*; ::sf::shareSource");
+  if (Tcl_Eval(interp, "namespace import ::sf::*; ::sf::shareSource") != TCL_OK) return TCL_ERROR;
+  Tcl_Eval(interp, "namespace eval ::sf::thesis {}");
+  Tcl_SetVar(interp, "::sf::thesis::builtFrom", SANDFLOW_COMPAT_DIR, TCL_GLOBAL_ONLY);
+  return Tcl_Eval(interp, kLoadThesis);
 }
 
 void setArgv(Tcl_Interp* interp, const char* argv0, int argc, char** argv) {

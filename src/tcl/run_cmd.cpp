@@ -1,5 +1,8 @@
-// run N ?-every K script?, step, reset
+// run ?N? ?-every K script?, step, reset
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <limits>
 
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/session.hpp"
@@ -58,31 +61,107 @@ int tick(Session& s) {
   return code;
 }
 
+// What a run is asked to do: N steps, and every K steps the -every script or
+// (a run with no N) a snapshot named after the step.
+struct RunRequest {
+  Tcl_WideInt steps = 0;
+  int every = 0;
+  Tcl_Obj* script = nullptr;
+  std::string framePrefix;
+};
+
+// A global variable as a whole number >= least; false (with the error) when it
+// is not one.
+bool globalCount(Tcl_Interp* interp, const char* name, Tcl_Obj* value, Tcl_WideInt least,
+                 Tcl_WideInt& out) {
+  if (Tcl_GetWideIntFromObj(nullptr, value, &out) == TCL_OK && out >= least) return true;
+  fail(interp, std::string("VALUE ") + name,
+       std::string(name) + " must be a whole number >= " + std::to_string(least) + ", got \"" +
+           Tcl_GetString(value) + "\"");
+  return false;
+}
+
+// `run` with no N runs the thesis's way (docs/thesis-compat.md): N is the
+// global TIMESTEPS and, with no -every, a snapshot PREFIXnnnnnn.png (the step)
+// is taken every GRAPHICSFRAMES steps when SNAPSHOTPREFIX is set. Read here,
+// not in the Tcl layer, so that `run` stays one command with one set of errors.
+int thesisRun(Tcl_Interp* interp, RunRequest& r) {
+  Tcl_Obj* steps = Tcl_GetVar2Ex(interp, "TIMESTEPS", nullptr, TCL_GLOBAL_ONLY);
+  if (!steps) return fail(interp, "VALUE STEPS", "run needs N: give a count, or set TIMESTEPS");
+  if (!globalCount(interp, "TIMESTEPS", steps, 0, r.steps)) return TCL_ERROR;
+  if (r.script) return TCL_OK;
+  Tcl_Obj* prefix = Tcl_GetVar2Ex(interp, "SNAPSHOTPREFIX", nullptr, TCL_GLOBAL_ONLY);
+  if (!prefix || Tcl_GetCharLength(prefix) == 0) return TCL_OK;
+  Tcl_Obj* frames = Tcl_GetVar2Ex(interp, "GRAPHICSFRAMES", nullptr, TCL_GLOBAL_ONLY);
+  if (!frames)
+    return fail(interp, "VALUE GRAPHICSFRAMES",
+                "SNAPSHOTPREFIX asks for snapshots: set GRAPHICSFRAMES to say how often");
+  Tcl_WideInt every = 0;
+  if (!globalCount(interp, "GRAPHICSFRAMES", frames, 1, every)) return TCL_ERROR;
+  r.every = int(std::min<Tcl_WideInt>(every, std::numeric_limits<int>::max()));
+  r.framePrefix = Tcl_GetString(prefix);
+  return TCL_OK;
+}
+
+// run ?N? ?-every K script?: N may be left out (thesisRun), so four words are
+// "-every K script" unless the first is a count.
+int parseRun(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], RunRequest& r) {
+  Tcl_WideInt unused = 0;
+  const bool counted = objc == 2 || objc == 5 ||
+                       (objc == 4 && Tcl_GetWideIntFromObj(nullptr, objv[1], &unused) == TCL_OK);
+  if (objc < 1 || objc > 5 || objc == 3 || (objc == 4 && counted)) {
+    Tcl_WrongNumArgs(interp, 1, objv, "?N? ?-every K script?");
+    return TCL_ERROR;
+  }
+  if (counted) {
+    if (Tcl_GetWideIntFromObj(interp, objv[1], &r.steps) != TCL_OK) return TCL_ERROR;
+    if (r.steps < 0)
+      return fail(interp, "VALUE STEPS", "N must be >= 0, got " + std::to_string(r.steps));
+  }
+  if (objc == 4 || objc == 5) {
+    const int at = objc - 3;
+    if (optionIndex(interp, objv[at], kRunOptions) < 0) return TCL_ERROR;
+    if (!getEvery(interp, objv[at + 1], r.every)) return TCL_ERROR;
+    r.script = objv[at + 2];
+  }
+  return counted ? TCL_OK : thesisRun(interp, r);
+}
+
+// What is due every K steps: the -every script, or the run's snapshot.
+int everyK(Session& s, const RunRequest& r) {
+  Tcl_Obj* script = r.script;
+  if (!script) {
+    char step[32];
+    std::snprintf(step, sizeof step, "%06lld.png", s.manager.stepCount());
+    script = Tcl_NewListObj(0, nullptr);
+    Tcl_ListObjAppendElement(nullptr, script, Tcl_NewStringObj("::sf::snapshot", -1));
+    Tcl_ListObjAppendElement(nullptr, script, newString(r.framePrefix + step));
+  }
+  Tcl_IncrRefCount(script);
+  const int code = Tcl_EvalObjEx(s.interp, script, TCL_EVAL_GLOBAL);
+  Tcl_DecrRefCount(script);
+  if (code == TCL_ERROR) {
+    const std::string where = std::string("\n    (in ") +
+                              (r.script ? "-every script" : "snapshot") + " after step " +
+                              std::to_string(s.manager.stepCount()) + ")";
+    Tcl_AddErrorInfo(s.interp, where.c_str());
+  }
+  return code;
+}
+
 int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   Session& s = sessionOf(data);
   if (refuseWhileRunning(s) != TCL_OK) return TCL_ERROR;
-  if (objc != 2 && objc != 5) {
-    Tcl_WrongNumArgs(interp, 1, objv, "N ?-every K script?");
-    return TCL_ERROR;
-  }
-  Tcl_WideInt steps = 0;
-  if (Tcl_GetWideIntFromObj(interp, objv[1], &steps) != TCL_OK) return TCL_ERROR;
-  if (steps < 0) return fail(interp, "VALUE STEPS", "N must be >= 0, got " + std::to_string(steps));
-  int every = 0;
-  Tcl_Obj* script = nullptr;
-  if (objc == 5) {
-    if (optionIndex(interp, objv[2], kRunOptions) < 0) return TCL_ERROR;
-    if (!getEvery(interp, objv[3], every)) return TCL_ERROR;
-    script = objv[4];
-  }
+  RunRequest r;
+  if (parseRun(interp, objc, objv, r) != TCL_OK) return TCL_ERROR;
   double computeSeconds = 0.0;
   Tcl_WideInt done = 0;
   RunningFlag running(s);
-  s.runTotal = steps;
+  s.runTotal = r.steps;
   ++s.runs;
   using Clock = std::chrono::steady_clock;
   auto lastTick = Clock::now();
-  for (; done < steps; ++done) {
+  for (; done < r.steps; ++done) {
     const auto t0 = Clock::now();
     s.runDone = done;
     if (s.runTick && t0 - lastTick >= std::chrono::milliseconds(s.runTickMs)) {
@@ -100,17 +179,11 @@ int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     if (s.manager.hasLattice())  // the rate so far, so that -every scripts can report it
       s.manager.setMlups(double(s.manager.lattice().nodes()) * double(done + 1) / computeSeconds /
                          1e6);
-    if (script && (done + 1) % every == 0) {
-      const int code = Tcl_EvalObjEx(interp, script, TCL_EVAL_GLOBAL);
+    if (r.every > 0 && (done + 1) % r.every == 0) {
+      const int code = everyK(s, r);
       if (code == TCL_BREAK) {
         ++done;
         break;
-      }
-      if (code == TCL_ERROR) {
-        const std::string where =
-            "\n    (in -every script after step " + std::to_string(s.manager.stepCount()) + ")";
-        Tcl_AddErrorInfo(interp, where.c_str());
-        return TCL_ERROR;
       }
       if (code != TCL_OK && code != TCL_CONTINUE) return code;
     }
