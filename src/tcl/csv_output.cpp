@@ -1,6 +1,9 @@
 // output csv FILE -elements IDS ?-every K?: an element time series, and the
 // CSV writing that it shares with "record".
+#include <unistd.h>
+
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <set>
 #include <string>
@@ -36,6 +39,11 @@ void CsvRecorder::record(const Session& s) {
   }
   row += "\n";
   const bool first = !file_;
+  if (first && s.resumeStep >= 0 && resume(s.resumeStep)) {
+    writeOrThrow(row);
+    ++written_;
+    return;
+  }
   if (first) {
     file_ = std::fopen(path().c_str(), "we");  // close-on-exec: not for ffmpeg or gnuplot
     if (!file_)
@@ -58,6 +66,39 @@ void CsvRecorder::record(const Session& s) {
     throw;
   }
   ++written_;
+}
+
+bool CsvRecorder::resume(long long step) {
+  std::FILE* f = std::fopen(path().c_str(), "r+e");
+  if (!f) return false;  // nothing to continue: a fresh file
+  std::string text;
+  char buffer[65536];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, f)) > 0;) text.append(buffer, n);
+  std::string header = "step,time";
+  for (const std::string& c : columns_) {
+    header += ',';
+    header += c;
+  }
+  header += '\n';
+  if (std::ferror(f) || text.compare(0, header.size(), header) != 0) {
+    std::fclose(f);  // another series, or unreadable: start afresh
+    return false;
+  }
+  // Keep the rows before `step` (a run that went on past the checkpoint wrote
+  // the rest); the row for `step` itself comes next.
+  std::size_t keep = header.size();
+  while (keep < text.size()) {
+    const std::size_t end = text.find('\n', keep);
+    if (end == std::string::npos || std::atoll(text.c_str() + keep) >= step) break;
+    keep = end + 1;
+  }
+  if (std::fflush(f) != 0 || ftruncate(fileno(f), off_t(keep)) != 0 ||
+      std::fseek(f, 0, SEEK_END) != 0) {
+    std::fclose(f);
+    throw Error("IO WRITE", std::string("cannot continue it: ") + std::strerror(errno));
+  }
+  file_ = f;
+  return true;
 }
 
 void CsvRecorder::finish() {
@@ -156,7 +197,8 @@ int OutputCsv(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
       }))
     return TCL_ERROR;
   if (!given) return fail(interp, "VALUE ELEMENTS", "output csv needs -elements IDS");
-  if (startRecorder(s, std::make_unique<ElementRecorder>(path, every, std::move(ids))) != TCL_OK)
+  if (startRecorder(s, std::make_unique<ElementRecorder>(path, every, std::move(ids)), objc,
+                    objv) != TCL_OK)
     return TCL_ERROR;
   Tcl_SetObjResult(interp, newString(path));
   return TCL_OK;

@@ -17,8 +17,12 @@ class CsvRecorder : public Recorder {
   ~CsvRecorder() override;
   // The first record creates (or truncates) the file and writes the header;
   // when it fails, no file is left.
+  // While a checkpoint's recordings start again (Session::resumeStep), the
+  // first record continues an existing file of the same columns: rows from
+  // that step on are dropped, the header is kept.
   void record(const Session& s) final;
   void finish() final;
+  bool resumable() const final { return true; }
 
  protected:
   // Appends this record's values, one per column; throws sf::Error when the
@@ -27,6 +31,7 @@ class CsvRecorder : public Recorder {
 
  private:
   void writeOrThrow(const std::string& text);
+  bool resume(long long step);  // false: no such file (or another series) to continue
   std::vector<std::string> columns_;
   std::FILE* file_ = nullptr;
   std::vector<double> scratch_;

@@ -255,7 +255,7 @@ int OutputMovie(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
     return TCL_OK;
   });
   if (code != TCL_OK) return code;
-  if (startRecorder(s, std::move(movie)) != TCL_OK) return TCL_ERROR;
+  if (startRecorder(s, std::move(movie), objc, objv) != TCL_OK) return TCL_ERROR;
   Tcl_SetObjResult(interp, newString(path));
   return TCL_OK;
 }

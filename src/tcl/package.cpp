@@ -21,7 +21,7 @@ namespace eval ::sf {
   if {[info commands ::sf::warn] eq ""} {
     proc warn {message} { puts stderr "sandflow warning: $message" }
   }
-  namespace export lattice sim run step reset output help material disc wall polygon ellipse superquadric element bond record plot view snapshot
+  namespace export lattice sim run step reset checkpoint output help material disc wall polygon ellipse superquadric element bond record plot view snapshot
   # "source" is also Tcl's command to read a file: ::sf::source is not exported;
   # the application installs a global "source" that serves both (sf::shareSource).
   proc shareSource {} {
@@ -47,18 +47,20 @@ namespace eval ::sf {
 
 }  // namespace
 
+void warnUser(Session& session, const std::string& message) {
+  Tcl_Obj* cmd[2] = {Tcl_NewStringObj("::sf::warn", -1), Tcl_NewStringObj(message.c_str(), -1)};
+  for (Tcl_Obj* o : cmd) Tcl_IncrRefCount(o);
+  // A failing warn procedure must not turn a warning into an error of the run.
+  Tcl_Obj* saved = Tcl_GetObjResult(session.interp);
+  Tcl_IncrRefCount(saved);
+  Tcl_EvalObjv(session.interp, 2, cmd, TCL_EVAL_GLOBAL);
+  Tcl_SetObjResult(session.interp, saved);
+  Tcl_DecrRefCount(saved);
+  for (Tcl_Obj* o : cmd) Tcl_DecrRefCount(o);
+}
+
 void flushWarnings(Session& session) {
-  for (const std::string& w : session.manager.takeWarnings()) {
-    Tcl_Obj* cmd[2] = {Tcl_NewStringObj("::sf::warn", -1), Tcl_NewStringObj(w.c_str(), -1)};
-    for (Tcl_Obj* o : cmd) Tcl_IncrRefCount(o);
-    // A failing warn procedure must not turn a warning into an error of the run.
-    Tcl_Obj* saved = Tcl_GetObjResult(session.interp);
-    Tcl_IncrRefCount(saved);
-    Tcl_EvalObjv(session.interp, 2, cmd, TCL_EVAL_GLOBAL);
-    Tcl_SetObjResult(session.interp, saved);
-    Tcl_DecrRefCount(saved);
-    for (Tcl_Obj* o : cmd) Tcl_DecrRefCount(o);
-  }
+  for (const std::string& w : session.manager.takeWarnings()) warnUser(session, w);
 }
 
 }  // namespace sf::tcl
@@ -83,6 +85,7 @@ extern "C" int Sandflow_Init(Tcl_Interp* interp) {
   registerRecordCommand(interp, session);
   registerPlotCommand(interp, session);
   registerGuiCommands(interp, session);
+  registerCheckpointCommands(interp, session);
   if (Tcl_Eval(interp, kWarnProc) != TCL_OK) return TCL_ERROR;
   return Tcl_PkgProvide(interp, "sandflow", SANDFLOW_VERSION);
 }

@@ -156,8 +156,8 @@ int Record(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[])
   if (!chosen)  // everything that applies: the fluid's quantities with a lattice
     for (int q = 0; q < qCount; ++q)
       if (!needsLattice(q) || s.manager.hasLattice()) quantities.push_back(q);
-  if (startRecorder(s, std::make_unique<SceneRecorder>(path, every, std::move(quantities))) !=
-      TCL_OK)
+  if (startRecorder(s, std::make_unique<SceneRecorder>(path, every, std::move(quantities)), objc,
+                    objv) != TCL_OK)
     return TCL_ERROR;
   Tcl_SetObjResult(interp, newString(path));
   return TCL_OK;

@@ -1,6 +1,7 @@
 // The recorders of a session: called after steps, finished on close, reset and exit.
 #include <algorithm>
 #include <filesystem>
+#include <vector>
 
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/session.hpp"
@@ -108,6 +109,30 @@ int startRecorder(Session& s, std::unique_ptr<Recorder> recorder) {
   }
   s.recorders.push_back(std::move(recorder));
   return TCL_OK;
+}
+
+int startRecorder(Session& s, std::unique_ptr<Recorder> recorder, int objc, Tcl_Obj* const objv[]) {
+  // Named as a user types it, fully qualified: an ensemble's verb arrives as
+  // its implementation (::sf::output::csv), which becomes "::sf::output csv".
+  std::vector<Tcl_Obj*> words(objv, objv + objc);
+  if (Tcl_Command token = Tcl_GetCommandFromObj(s.interp, objv[0])) {
+    Tcl_Obj* full = Tcl_NewObj();
+    Tcl_GetCommandFullName(s.interp, token, full);
+    std::string name = Tcl_GetString(full);
+    Tcl_DecrRefCount(full);
+    const std::size_t verb = name.rfind("::");
+    if (name.rfind("::sf::", 0) == 0 && verb > 4) {  // ::sf::NOUN::VERB
+      words[0] = Tcl_NewStringObj(name.substr(0, verb).c_str(), -1);
+      words.insert(words.begin() + 1, Tcl_NewStringObj(name.c_str() + verb + 2, -1));
+    } else {
+      words[0] = Tcl_NewStringObj(name.c_str(), -1);
+    }
+  }
+  Tcl_Obj* command = Tcl_NewListObj(int(words.size()), words.data());
+  Tcl_IncrRefCount(command);
+  recorder->setCommand(Tcl_GetString(command));
+  Tcl_DecrRefCount(command);
+  return startRecorder(s, std::move(recorder));
 }
 
 }  // namespace sf::tcl

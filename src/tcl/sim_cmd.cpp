@@ -1,6 +1,7 @@
 // sim configure|cget|info|help
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/session.hpp"
@@ -249,11 +250,38 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
                        {"warnings", warnings},
                        {"kinetic", newDouble(m.assembly().kineticEnergy())},
                        {"critical", newDouble(m.assembly().criticalTimestep())},
-                       {"covered", Tcl_NewWideIntObj(
-                                       Tcl_WideInt(m.coupled() ? m.coupler().coveredCells() : 0))},
+                       {"covered", Tcl_NewWideIntObj(Tcl_WideInt(
+                                       m.coupled() ? m.lattice().coveredCells().size() : 0))},
                        {"fluidforce", newVec2(fluidForce)},
                        {"fluidtorque", newDouble(fluidTorque)},
                        {"substeps", Tcl_NewIntObj(m.substeps())}}));
+  return TCL_OK;
+}
+
+// The scene's state as 8 hex digits (CRC-32 of what a checkpoint holds of it):
+// two runs that agree bit for bit have the same hash.
+int SimHash(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
+    return TCL_ERROR;
+  }
+  char hex[9];
+  std::snprintf(hex, sizeof hex, "%08x", unsigned(sessionOf(data).manager.stateHash()));
+  Tcl_SetObjResult(interp, newString(hex));
+  return TCL_OK;
+}
+
+// The kernel's invariants checked afresh: a list of what is wrong, empty when
+// all hold.
+int SimCheck(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
+    return TCL_ERROR;
+  }
+  Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
+  for (const std::string& p : sessionOf(data).manager.validate())
+    Tcl_ListObjAppendElement(nullptr, list, newString(p));
+  Tcl_SetObjResult(interp, list);
   return TCL_OK;
 }
 
@@ -267,7 +295,8 @@ int SimHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
                                  {"configure ?-option value ...?", "cget -option",
                                   "info    -> dict time step timestep tau mach elements contacts "
                                   "bonds broken nodes mlups stable covered fluidforce ...",
-                                  "help"},
+                                  "hash    -> the state's CRC-32, 8 hex digits",
+                                  "check   -> the invariants that fail (empty: all hold)", "help"},
                                  kOptions)));
   return TCL_OK;
 }
@@ -275,10 +304,14 @@ int SimHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
 }  // namespace
 
 void registerSimCommands(Tcl_Interp* interp, Session* session) {
-  makeEnsemble(
-      interp, "::sf::sim",
-      {{"configure", SimConfigure}, {"cget", SimCget}, {"info", SimInfo}, {"help", SimHelp}},
-      session);
+  makeEnsemble(interp, "::sf::sim",
+               {{"configure", SimConfigure},
+                {"cget", SimCget},
+                {"info", SimInfo},
+                {"hash", SimHash},
+                {"check", SimCheck},
+                {"help", SimHelp}},
+               session);
 }
 
 }  // namespace sf::tcl

@@ -14,7 +14,7 @@ namespace eval ::sf::gui {
     variable scriptDir [pwd]   ;# where the file dialogs start
 }
 
-foreach part {actions view tools runbar props plots console scene_script} {
+foreach part {actions view tools runbar props plots console scene_script thesis} {
     if {[file exists [file join $::sf::gui::library $part.tcl]]} {
         source [file join $::sf::gui::library $part.tcl]
     }
@@ -83,6 +83,8 @@ proc ::sf::gui::menus {} {
     $m.file add command -label "Open script\u2026" -accelerator Ctrl+O -command ::sf::gui::openScript
     $m.file add command -label "Save scene as script\u2026" -accelerator Ctrl+S \
         -command ::sf::gui::saveScript
+    $m.file add command -label "Open checkpoint\u2026" -command ::sf::gui::openCheckpoint
+    $m.file add command -label "Save checkpoint\u2026" -command ::sf::gui::saveCheckpoint
     $m.file add separator
     $m.file add command -label "Export snapshot\u2026" -command ::sf::gui::exportSnapshot
     $m.file add command -label "Export VTK\u2026" -command ::sf::gui::exportVtk
@@ -266,8 +268,53 @@ proc ::sf::gui::saveScript {} {
                   -defaultextension .tcl -filetypes {{{Tcl scripts} {.tcl}}}]
     if {$file eq ""} return
     set scriptDir [file dirname $file]
-    catch {do [list ::sf::gui::saveSceneScript $file]}
-    status "saved $file"
+    # After a run the commands rebuild the scene at t = 0; its state can go
+    # beside the script in a checkpoint that the script loads.
+    set state 0
+    set step [dict get [::sf::sim info] step]
+    if {$step > 0} {
+        set answer [tk_messageBox -parent . -icon question -type yesnocancel \
+            -title "Save scene as script" \
+            -message "The scene has run $step steps. Save its state too?" \
+            -detail "Yes: the flow, contact and bond histories and the clock go into\
+                [file rootname [file tail $file]].sfck beside the script, which loads it:\
+                the script gives back the scene exactly as it is now.\n\nNo: the script\
+                rebuilds the scene at t = 0, the fluid at rest."]
+        if {$answer eq "cancel"} return
+        set state [expr {$answer eq "yes"}]
+    }
+    if {![catch {do [list ::sf::gui::saveSceneScript $file -state $state]}]} {
+        status "saved $file"
+    }
+}
+
+proc ::sf::gui::openCheckpoint {} {
+    variable scriptDir
+    set file [tk_getOpenFile -parent . -title "Open checkpoint" -initialdir $scriptDir \
+                  -filetypes {{{Checkpoints} {.sfck}} {{All files} *}}]
+    if {$file eq ""} return
+    set scriptDir [file dirname $file]
+    if {[running]} {
+        status "pause the run first" error
+        return
+    }
+    if {![catch {do [list checkpoint load $file]}]} {
+        forgetHistory  ;# the loaded scene starts a new history, as after New
+        syncViewMenu
+        view::fit
+        status "loaded $file"
+    }
+}
+
+proc ::sf::gui::saveCheckpoint {} {
+    variable scriptDir
+    set file [tk_getSaveFile -parent . -title "Save checkpoint" -initialdir $scriptDir \
+                  -defaultextension .sfck -filetypes {{{Checkpoints} {.sfck}}}]
+    if {$file eq ""} return
+    set scriptDir [file dirname $file]
+    if {![catch {do [list checkpoint save $file]}]} {
+        status "saved $file"
+    }
 }
 
 proc ::sf::gui::exportSnapshot {} {

@@ -3,7 +3,11 @@
 # docs/commands.md, and the file it is saved to. Needs no Tk.
 #
 #   ::sf::gui::sceneScript              -> the script
-#   ::sf::gui::saveSceneScript FILE     -> FILE, written whole or not at all
+#   ::sf::gui::saveSceneScript FILE ?-state 0|1?   -> FILE, written whole or not at all
+#       -state 1 also saves the state no command sets (the flow, contact and
+#       bond histories, the clock) in a checkpoint beside FILE (FILE's name
+#       with .sfck), which the script's last line loads: after a run, the
+#       script then gives back the scene exactly as it was.
 #   ::sf::gui::elementScript ID         -> the commands that remake one element
 #
 # Numbers are written as Tcl prints a double with tcl_precision 0: the
@@ -40,7 +44,23 @@ proc ::sf::gui::sceneScript {} {
     }
 }
 
-proc ::sf::gui::saveSceneScript {file} {
+proc ::sf::gui::saveSceneScript {file args} {
+    if {[llength $args] % 2} {
+        return -code error -errorcode {TCL WRONGARGS} \
+            {wrong # args: should be "::sf::gui::saveSceneScript FILE ?-state 0|1?"}
+    }
+    set state 0
+    foreach {option value} $args {
+        if {$option ne "-state"} {
+            return -code error -errorcode [list TCL LOOKUP INDEX option $option] \
+                "bad option \"$option\": must be -state"
+        }
+        if {$value eq "" || ![string is boolean -strict $value]} {
+            return -code error -errorcode {TCL VALUE NUMBER} \
+                "expected boolean value but got \"$value\""
+        }
+        set state [string is true $value]
+    }
     if {[catch {sceneScript} text options]} {
         return -code error -errorcode [dict get $options -errorcode] \
             "cannot write \"$file\": $text"
@@ -49,6 +69,12 @@ proc ::sf::gui::saveSceneScript {file} {
     if {[file isdirectory $file]} {
         return -code error -errorcode {SANDFLOW IO WRITE} \
             "cannot write \"$file\": Is a directory"
+    }
+    if {$state} {
+        # The checkpoint first: a script is never left loading a file that is not there.
+        set checkpoint [file rootname $file].sfck
+        ::sf::checkpoint save $checkpoint
+        append text \n [scenescript::stateLines [file tail $checkpoint]] \n
     }
     set part $file.tmp
     if {[catch {open $part w} channel options]} {
@@ -75,6 +101,19 @@ proc ::sf::gui::elementScript {id} {
 # ---- helpers -----------------------------------------------------------------
 
 namespace eval ::sf::gui::scenescript {
+
+# The script's last lines with -state 1: the checkpoint that holds what no
+# command sets, found beside the script wherever the two are moved.
+proc stateLines {checkpoint} {
+    set info [::sf::sim info]
+    join [list \
+        "# The state at step [dict get $info step] (the flow, contact and bond histories,\
+            bond breaks, sources' clones, the clock)," \
+        "# saved beside this script: loading it replaces the scene the lines above build, so\
+            an edit above" \
+        "# takes effect only without this line." \
+        "checkpoint load \[file join \[file dirname \[info script\]\] [list $checkpoint]\]"] \n
+}
 
 # Runs a script in the caller with tcl_precision 0 and returns its result: a
 # user's "set tcl_precision 6" would otherwise cut every number written.

@@ -4,8 +4,10 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <string>
 #include <vector>
 
+#include "sandflow/core/byte_stream.hpp"
 #include "sandflow/dem/bodies.hpp"
 #include "sandflow/dem/bond.hpp"
 #include "sandflow/dem/contact_list.hpp"
@@ -139,6 +141,18 @@ class Assembly {
   Vec2 momentum() const;
   const StepTimes& times() const { return times_; }
   long long broadPhaseBuilds() const { return builds_; }
+
+  // The whole state, bit for bit (checkpoints): materials, settings, every
+  // element's columns in slot order, the contact list with its history and
+  // the broad phase's reference poses, bonds with their breaks, sources. A
+  // continued run takes the same steps as one that never stopped. `loadState`
+  // fills an empty assembly, validating what it reads (sf::Error "FORMAT ..."
+  // or the kernel's own checks).
+  void saveState(ByteWriter& out) const;
+  void loadState(ByteReader& in);
+  // The invariants the step relies on, checked afresh (tests, the fuzzer,
+  // "sim check"): what is wrong, in words; empty when all hold.
+  std::vector<std::string> validate() const;
 
  private:
   void computeForces(double dt, const Vec2& gravity, bool commit);

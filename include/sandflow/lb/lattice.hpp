@@ -6,8 +6,10 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
+#include "sandflow/core/byte_stream.hpp"
 #include "sandflow/lb/lattice_def.hpp"
 #include "sandflow/lb/node.hpp"
 
@@ -135,6 +137,17 @@ class Lattice {
   std::size_t populationCount() const { return 9 * stride_; }
   std::size_t memoryBytes() const;
   const std::vector<std::unique_ptr<Node>>& kinds() const { return kinds_; }
+
+  // The whole state, bit for bit (checkpoints): definition, obstacles, both
+  // population arrays (solid nodes keep the values they had in each) and the
+  // covered cells of the last step. `loadState` validates what it reads and
+  // throws sf::Error "FORMAT ..." (or the definition's own error).
+  void saveState(ByteWriter& out) const;
+  static std::unique_ptr<Lattice> loadState(ByteReader& in, int threads);
+  // Its invariants, checked afresh: finite populations at every node that
+  // holds fluid, obstacle ids unique, covered cells on bulk-fluid nodes with
+  // a solid ratio in (0, 1]. Empty when all hold.
+  std::vector<std::string> validate() const;
 
  private:
   std::int64_t index(int i, int j) const { return std::int64_t(j + 1) * rowStride_ + (i + 1); }

@@ -76,6 +76,18 @@ class Manager {
   };
   const Times& times() const { return times_; }
 
+  // The whole scene, bit for bit (checkpoints): settings, clock, warnings
+  // given, the lattice and the elements. `loadState` fills a fresh Manager
+  // (threads: its own); a continued run takes the same steps as one that never
+  // stopped, on any thread count.
+  void saveState(ByteWriter& out) const;
+  void loadState(ByteReader& in);
+  // The lattice's and the elements' invariants, and the clock's: what is
+  // wrong, in words; empty when all hold.
+  std::vector<std::string> validate() const;
+  // CRC-32 of the whole state (saveState's bytes): equal hashes, equal scenes.
+  std::uint32_t stateHash() const;
+
   // Million lattice-node updates per second of the last `run`.
   double mlups() const { return mlups_; }
   void setMlups(double m) { mlups_ = m; }

@@ -14,7 +14,7 @@ namespace sf::tcl {
 
 struct Session;
 
-// Output written while runs go on (output csv, output movie): after every step
+// Output written while runs go on (output csv, movie, vtk -every; record): after every step
 // whose count is a multiple of every(), record() is called; finish() completes
 // the file. Both throw sf::Error on failure.
 class Recorder {
@@ -32,7 +32,13 @@ class Recorder {
     } catch (...) {
     }
   }
-  virtual const char* kind() const = 0;  // "csv", "movie"
+  virtual const char* kind() const = 0;  // "csv", "record", "movie", "vtk"
+  // The command that started it (a Tcl list), which a checkpoint keeps; and
+  // whether that command, run again as `checkpoint load` does, continues the
+  // same file (CSV series: yes; a movie cannot be reopened).
+  const std::string& command() const { return command_; }
+  void setCommand(std::string command) { command_ = std::move(command); }
+  virtual bool resumable() const { return false; }
   const std::string& path() const { return path_; }
   // The path in a form where "a.csv", "./a.csv" and "/abs/a.csv" agree.
   static std::string samePath(const std::string& path);
@@ -44,7 +50,7 @@ class Recorder {
   long long written_ = 0;  // records (rows, frames) so far
 
  private:
-  std::string path_, same_;
+  std::string path_, same_, command_;
   int every_;
 };
 
@@ -62,6 +68,9 @@ struct Session {
   bool inTick = false;                  // its tick is serving the GUI's events
   long long runDone = 0, runTotal = 0;  // the run's progress, for the GUI's bar
   long long runs = 0;                   // runs started (the GUI tells one from the next)
+  // While `checkpoint load` starts the checkpoint's recordings again: its
+  // step, from which a CSV series continues its file (else -1).
+  long long resumeStep = -1;
   // The workbench view's last picture without its overlay (rubber bands, the
   // selection), so that a drag redraws only what moves.
   std::unique_ptr<render::DrawList> viewList;
@@ -77,9 +86,13 @@ int recordStep(Session& s);
 int closeRecorders(Session& s, const std::string* path);
 // Adds a recorder after its first record (taken now, for the current state).
 int startRecorder(Session& s, std::unique_ptr<Recorder> recorder);
+// The same, keeping the command that starts it (objv) for checkpoints.
+int startRecorder(Session& s, std::unique_ptr<Recorder> recorder, int objc, Tcl_Obj* const objv[]);
 
 // Passes the Manager's new warnings to the Tcl procedure ::sf::warn.
 void flushWarnings(Session& session);
+// Passes one message to ::sf::warn (whose failure is ignored).
+void warnUser(Session& session, const std::string& message);
 
 // Each registers one ensemble (or command) in namespace ::sf.
 void registerLatticeCommands(Tcl_Interp* interp, Session* session);
@@ -95,6 +108,7 @@ void registerViewCommands(Tcl_Interp* interp, Session* session);
 void registerRecordCommand(Tcl_Interp* interp, Session* session);
 void registerPlotCommand(Tcl_Interp* interp, Session* session);
 void registerGuiCommands(Tcl_Interp* interp, Session* session);
+void registerCheckpointCommands(Tcl_Interp* interp, Session* session);
 
 }  // namespace sf::tcl
 

@@ -1,0 +1,127 @@
+// A lattice's state in a checkpoint (Lattice::saveState / loadState).
+#include <cstring>
+
+#include "sandflow/geometry/vec2_bytes.hpp"
+#include "sandflow/lb/lattice.hpp"
+
+namespace sf::lb {
+namespace {
+
+void putDef(ByteWriter& out, const LatticeDef& d) {
+  putVec2(out, d.origin), putVec2(out, d.size);
+  out.put(std::int32_t(d.cells)), out.put(d.spacing);
+  out.put(d.viscosity), out.put(d.tau), out.put(d.timestep);  // optional<double>: bytes
+  out.put(d.density), putVec2(out, d.forcing);
+  out.put(std::int32_t(d.collision)), out.put(std::int32_t(d.forceScheme)), out.put(d.magic);
+  for (const SideDef& side : d.sides) {
+    out.put(std::int32_t(side.kind)), putVec2(out, side.velocity), out.put(side.pressure);
+  }
+}
+
+template <class Enum>
+Enum getEnum(ByteReader& in, int count, const char* what) {
+  const auto v = in.get<std::int32_t>(what);
+  if (v < 0 || v >= count) ByteReader::fail(std::string("it holds an unknown ") + what);
+  return Enum(v);
+}
+
+LatticeDef getDef(ByteReader& in) {
+  LatticeDef d;
+  d.origin = getVec2(in, "lattice origin"), d.size = getVec2(in, "lattice size");
+  d.cells = in.get<std::int32_t>("lattice cells"), d.spacing = in.get<double>("lattice spacing");
+  in.get(d.viscosity, "viscosity"), in.get(d.tau, "tau"), in.get(d.timestep, "timestep");
+  d.density = in.get<double>("density"), d.forcing = getVec2(in, "forcing");
+  d.collision = getEnum<Collision>(in, 2, "collision");
+  d.forceScheme = getEnum<ForceScheme>(in, 2, "forcing scheme");
+  d.magic = in.get<double>("TRT magic");
+  for (SideDef& side : d.sides) {
+    side.kind = getEnum<SideKind>(in, int(sideKindNames.size()), "side kind");
+    side.velocity = getVec2(in, "side velocity"), side.pressure = in.get<double>("side pressure");
+  }
+  return d;
+}
+
+}  // namespace
+
+void Lattice::saveState(ByteWriter& out) const {
+  out.tag("LATT");
+  putDef(out, p_.def);
+  out.put(std::int32_t(p_.nx)), out.put(std::int32_t(p_.ny));
+  out.put(p_.h), out.put(p_.dt), out.put(p_.tau), out.put(p_.viscosity);
+  out.put(std::uint64_t(obstacles_.size()));
+  for (const RectObstacle& r : obstacles_)
+    out.put(std::int32_t(r.id)), putVec2(out, r.lo), putVec2(out, r.hi), out.put(r.slip);
+  out.put(std::uint64_t(circles_.size()));
+  for (const CircleObstacle& c : circles_) {
+    out.put(std::int32_t(c.id)), putVec2(out, c.centre), out.put(c.radius), out.put(c.outside);
+    putVec2(out, c.velocity), out.put(c.spin);
+    putVec2(out, c.force), out.put(c.torque), out.put(std::uint64_t(c.cells));
+  }
+  const std::size_t count = populationCount();
+  out.put(std::uint64_t(count));
+  out.putRaw(f_, count * sizeof(double));
+  out.putRaw(g_, count * sizeof(double));
+  out.put(covered_.cells);
+  out.put(covered_.equilibriumInterior);
+  out.put(lastMach_);
+}
+
+std::unique_ptr<Lattice> Lattice::loadState(ByteReader& in, int threads) {
+  in.expectTag("LATT");
+  const LatticeDef def = getDef(in);
+  const ResolvedLattice params = resolve(def);  // the definition's own checks
+  const int nx = in.get<std::int32_t>("nx"), ny = in.get<std::int32_t>("ny");
+  const double h = in.get<double>("h"), dt = in.get<double>("dt");
+  const double tau = in.get<double>("tau"), viscosity = in.get<double>("viscosity");
+  // The definition in force resolves to the lattice in force (a -timestep
+  // rewrites the definition it applies).
+  if (nx != params.nx || ny != params.ny || h != params.h || dt != params.dt || tau != params.tau ||
+      viscosity != params.viscosity)
+    ByteReader::fail("its lattice does not match its definition");
+  auto lattice = std::make_unique<Lattice>(params);
+  lattice->setThreads(threads);
+  const std::size_t rects = in.count(1, "obstacles");
+  for (std::size_t k = 0; k < rects; ++k) {
+    RectObstacle r;
+    r.id = in.get<std::int32_t>("obstacle id");
+    if (r.id < 0) ByteReader::fail("it holds a negative obstacle id");
+    r.lo = getVec2(in, "obstacle"), r.hi = getVec2(in, "obstacle");
+    r.slip = in.getBool("obstacle slip");
+    lattice->addObstacle(r);
+  }
+  const std::size_t circles = in.count(1, "circles");
+  for (std::size_t k = 0; k < circles; ++k) {
+    CircleObstacle c;
+    c.id = in.get<std::int32_t>("circle id");
+    if (c.id < 0) ByteReader::fail("it holds a negative obstacle id");
+    c.centre = getVec2(in, "circle"), c.radius = in.get<double>("circle radius");
+    c.outside = in.getBool("circle");
+    c.velocity = getVec2(in, "circle velocity"), c.spin = in.get<double>("circle spin");
+    const Vec2 force = getVec2(in, "circle load");
+    const double torque = in.get<double>("circle load");
+    const auto cells = in.get<std::uint64_t>("circle load");
+    lattice->addCircle(c);
+    lattice->setCircleLoad(k, force, torque, std::size_t(cells));
+  }
+  const auto count = in.get<std::uint64_t>("populations");
+  if (count != lattice->populationCount())
+    ByteReader::fail("its populations do not fit its lattice");
+  in.getRaw(lattice->f_, count * sizeof(double), "populations");
+  in.getRaw(lattice->g_, count * sizeof(double), "populations");
+  std::vector<CoveredCell> cells;
+  in.get(cells, "covered cells");
+  const bool equilibriumInterior = in.getBool("covered cells");
+  for (const CoveredCell& c : cells) {
+    if (*reinterpret_cast<const unsigned char*>(&c.interior) > 1)
+      ByteReader::fail("it holds a bad flag in the covered cells");
+    const int i = c.node % lattice->rowStride_ - 1, j = c.node / lattice->rowStride_ - 1;
+    if (c.node < 0 || i < 0 || i >= nx || j < 0 || j >= ny || !(c.eps > 0 && c.eps <= 1))
+      ByteReader::fail("it holds a covered cell off the lattice");
+  }
+  lattice->setCoveredCells(std::move(cells), equilibriumInterior);
+  lattice->lastMach_ = in.get<double>("Mach number");
+  lattice->canUndo_ = false;
+  return lattice;
+}
+
+}  // namespace sf::lb
