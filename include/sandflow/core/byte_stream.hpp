@@ -88,6 +88,7 @@ class ByteReader {
   }
   void getRaw(void* out, std::size_t bytes, const char* what) {
     if (bytes > size_ - at_) fail(std::string("it ends inside ") + what);
+    if (bytes == 0) return;  // an empty vector's data() may be null
     std::memcpy(out, data_ + at_, bytes);
     at_ += bytes;
   }
