@@ -89,6 +89,7 @@ proc ::sf::gui::menus {} {
     $m.file add command -label "Export snapshot\u2026" -command ::sf::gui::exportSnapshot
     $m.file add command -label "Export VTK\u2026" -command ::sf::gui::exportVtk
     $m.file add command -label "Record movie\u2026" -command ::sf::gui::exportMovie
+    $m.file add command -label "Record VTK series\u2026" -command ::sf::gui::exportVtkSeries
     $m.file add command -label "Stop recordings" -command {catch {::sf::gui::do {output close}}}
     $m.file add separator
     $m.file add command -label "Quit" -accelerator Ctrl+Q -command ::sf::gui::quit
@@ -341,6 +342,17 @@ proc ::sf::gui::exportMovie {} {
     set every [askString "Movie" "A frame every how many steps?" 10]
     if {$every eq ""} return
     catch {do [list output movie $file -every $every]}
+}
+
+# A ParaView series of the next runs: numbered files and PREFIX.pvd, the
+# prefix being the chosen file's name without .pvd.
+proc ::sf::gui::exportVtkSeries {} {
+    set file [tk_getSaveFile -parent . -title "Record a VTK series of the next runs" \
+                  -defaultextension .pvd -filetypes {{{ParaView collections} {.pvd}}}]
+    if {$file eq ""} return
+    set every [askString "VTK series" "Files every how many steps?" 100]
+    if {$every eq ""} return
+    catch {do [list output vtk [file rootname $file] -every $every]}
 }
 
 proc ::sf::gui::showReference {} {
