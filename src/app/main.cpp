@@ -8,27 +8,43 @@
 
 #include <cstdio>
 #include <cstring>
+#include <string>
 
 #include "sandflow/tcl/session.hpp"
 
 namespace {
 
-// The thesis's command language (docs/thesis-compat.md), loaded in every mode
-// so that the thesis's scripts run unchanged: from $SANDFLOW_COMPAT_DIR, the
-// source tree this program was built from, or beside an installed program.
-constexpr const char* kLoadThesis = R"tcl(
-  set ::sf::thesis::library ""
-  foreach dir [list [expr {[info exists ::env(SANDFLOW_COMPAT_DIR)] ? $::env(SANDFLOW_COMPAT_DIR) : ""}] \
-                   $::sf::thesis::builtFrom \
-                   [file join [file dirname [file dirname [info nameofexecutable]]] share sandflow compat]] {
-    if {$dir ne "" && [file exists [file join $dir thesis.tcl]]} {
-      set ::sf::thesis::library $dir
-      break
+// A part of sandflow written in Tcl (the workbench, the thesis layer): sets
+// NS::library to its folder -- $ENV, the source tree this program was built
+// from, or share/sandflow/SUBDIR beside an installed program -- and sources
+// FILE from it.
+int sourceLibrary(Tcl_Interp* interp, const char* ns, const char* env, const char* builtFrom,
+                  const char* subdir, const char* file, const char* what) {
+  constexpr const char* kFind = R"tcl(
+    proc ::sf::sourceLibrary {ns envName builtFrom subdir file what} {
+      namespace eval $ns {}
+      set ${ns}::library ""
+      foreach dir [list [expr {[info exists ::env($envName)] ? $::env($envName) : ""}] \
+                       $builtFrom [file join [file dirname [file dirname \
+                           [info nameofexecutable]]] share sandflow $subdir]] {
+        if {$dir ne "" && [file exists [file join $dir $file]]} {
+          set ${ns}::library $dir
+          uplevel #0 [list source [file join $dir $file]]
+          return
+        }
+      }
+      error "$what ($subdir/$file) were not found"
     }
-  }
-  if {$::sf::thesis::library eq ""} { error "the thesis layer's Tcl files (compat/thesis.tcl) were not found" }
-  source [file join $::sf::thesis::library thesis.tcl]
-)tcl";
+  )tcl";
+  if (Tcl_Eval(interp, kFind) != TCL_OK) return TCL_ERROR;
+  Tcl_Obj* cmd = Tcl_NewListObj(0, nullptr);
+  for (const char* a : {"::sf::sourceLibrary", ns, env, builtFrom, subdir, file, what})
+    Tcl_ListObjAppendElement(nullptr, cmd, Tcl_NewStringObj(a, -1));
+  Tcl_IncrRefCount(cmd);
+  const int code = Tcl_EvalObjEx(interp, cmd, TCL_EVAL_GLOBAL);
+  Tcl_DecrRefCount(cmd);
+  return code;
+}
 
 int appInit(Tcl_Interp* interp) {
   if (Tcl_Init(interp) != TCL_OK) return TCL_ERROR;
@@ -36,9 +52,10 @@ int appInit(Tcl_Interp* interp) {
   Tcl_StaticPackage(interp, "sandflow", Sandflow_Init, nullptr);
   Tcl_SetVar(interp, "tcl_rcFileName", "~/.sandflowrc", TCL_GLOBAL_ONLY);
   if (Tcl_Eval(interp, "namespace import ::sf::*; ::sf::shareSource") != TCL_OK) return TCL_ERROR;
-  Tcl_Eval(interp, "namespace eval ::sf::thesis {}");
-  Tcl_SetVar(interp, "::sf::thesis::builtFrom", SANDFLOW_COMPAT_DIR, TCL_GLOBAL_ONLY);
-  return Tcl_Eval(interp, kLoadThesis);
+  // The thesis's command language (docs/thesis-compat.md), in every mode, so
+  // that the thesis's scripts run unchanged.
+  return sourceLibrary(interp, "::sf::thesis", "SANDFLOW_COMPAT_DIR", SANDFLOW_COMPAT_DIR, "compat",
+                       "thesis.tcl", "the thesis layer's Tcl files");
 }
 
 void setArgv(Tcl_Interp* interp, const char* argv0, int argc, char** argv) {
@@ -69,22 +86,6 @@ int runCommands(const char* argv0, const char* commands, int argc, char** argv) 
   return code == TCL_OK ? 0 : 1;
 }
 
-// Where the workbench's Tcl sources are: $SANDFLOW_GUI_DIR, the source tree
-// this program was built from, or beside an installed program.
-constexpr const char* kFindGui = R"tcl(
-  set ::sf::gui::library ""
-  foreach dir [list [expr {[info exists ::env(SANDFLOW_GUI_DIR)] ? $::env(SANDFLOW_GUI_DIR) : ""}] \
-                   $::sf::gui::builtFrom \
-                   [file join [file dirname [file dirname [info nameofexecutable]]] share sandflow gui]] {
-    if {$dir ne "" && [file exists [file join $dir main.tcl]]} {
-      set ::sf::gui::library $dir
-      break
-    }
-  }
-  if {$::sf::gui::library eq ""} { error "the workbench's Tcl files (gui/main.tcl) were not found" }
-  source [file join $::sf::gui::library main.tcl]
-)tcl";
-
 // The workbench: Tk is loaded into this interpreter only here, so headless runs
 // load neither Tk nor X. Returns when the main window is closed.
 int runGui(const char* argv0, int argc, char** argv) {
@@ -95,9 +96,8 @@ int runGui(const char* argv0, int argc, char** argv) {
           argv + (hasScript ? 1 : 0));
   int code = appInit(interp);
   if (code == TCL_OK) {
-    Tcl_Eval(interp, "namespace eval ::sf::gui {}");
-    Tcl_SetVar(interp, "::sf::gui::builtFrom", SANDFLOW_GUI_DIR, TCL_GLOBAL_ONLY);
-    code = Tcl_Eval(interp, kFindGui);
+    code = sourceLibrary(interp, "::sf::gui", "SANDFLOW_GUI_DIR", SANDFLOW_GUI_DIR, "gui",
+                         "main.tcl", "the workbench's Tcl files");
   }
   if (code == TCL_OK) {
     Tcl_Obj* cmd = Tcl_NewListObj(0, nullptr);

@@ -105,10 +105,7 @@ int CheckpointLoad(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const
     return TCL_ERROR;
   }
   Session& s = sessionOf(data);
-  if (s.inTick)
-    return fail(interp, "BUSY RUN",
-                "a run is in progress (step " + std::to_string(s.manager.stepCount()) +
-                    "): pause it first");
+  if (refuseWhileRunning(s) != TCL_OK) return TCL_ERROR;
   bool restart = true;
   if (!parseOptions(interp, objc, objv, 2, kLoadOptions,
                     [&](int, Tcl_Obj* o) { return getBool(interp, o, "-recordings", restart); }))

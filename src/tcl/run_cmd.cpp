@@ -30,16 +30,6 @@ int advance(Session& s) {
   return recordStep(s);
 }
 
-// A run's tick (the workbench's ::sf::gui::runtick) may serve a click or a
-// typed command that asks for another run, a step or a reset: refused, the
-// run in progress goes on. (An -every script may do all three.)
-int refuseWhileRunning(const Session& s) {
-  if (!s.inTick) return TCL_OK;
-  return fail(
-      s.interp, "BUSY RUN",
-      "a run is in progress (step " + std::to_string(s.manager.stepCount()) + "): pause it first");
-}
-
 // Sets Session::running for the run, restored however it ends (a run in an
 // -every script leaves the outer one running).
 struct RunningFlag {
@@ -215,6 +205,16 @@ int Reset(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) 
 }
 
 }  // namespace
+
+// A run's tick (the workbench's ::sf::gui::runtick) may serve a click or a
+// typed command that asks for another run, a step, a reset or a checkpoint load: refused, the
+// run in progress goes on. (An -every script may do all three.)
+int refuseWhileRunning(const Session& s) {
+  if (!s.inTick) return TCL_OK;
+  return fail(
+      s.interp, "BUSY RUN",
+      "a run is in progress (step " + std::to_string(s.manager.stepCount()) + "): pause it first");
+}
 
 void registerRunCommands(Tcl_Interp* interp, Session* session) {
   Tcl_CreateObjCommand(interp, "::sf::run", Run, session, nullptr);

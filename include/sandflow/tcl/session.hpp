@@ -89,6 +89,10 @@ int startRecorder(Session& s, std::unique_ptr<Recorder> recorder);
 // The same, keeping the command that starts it (objv) for checkpoints.
 int startRecorder(Session& s, std::unique_ptr<Recorder> recorder, int objc, Tcl_Obj* const objv[]);
 
+// Refuses (BUSY RUN) a command that would replace or advance the scene while
+// a run's tick serves the workbench; TCL_OK otherwise.
+int refuseWhileRunning(const Session& s);
+
 // Passes the Manager's new warnings to the Tcl procedure ::sf::warn.
 void flushWarnings(Session& session);
 // Passes one message to ::sf::warn (whose failure is ignored).
