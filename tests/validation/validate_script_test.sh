@@ -40,7 +40,7 @@ expect "case A drag" 2 "^ +(20|40) cells  h $number +[0-9]+ steps  drag $number 
 expect "case D, each run" 3 \
   "^(central/explicit|euler/explicit|central/implicit) +terminal Re $number   x/L over the last half $number\.\.$number   oscillation period ($number|none seen)$"
 expect "case E summary" 1 "^mean settling speed $number, Re $number; closest approach $number d"
-expect "plots" 1 '^plots: '
+expect "plots" 1 "^plots in "
 for plot in validation-couette validation-couette-tau validation-sediment validation-dkt; do
   [[ -s $tmp/plots/$plot.png ]] || problems+=("no plot $plot.png")
 done
