@@ -56,9 +56,11 @@ std::vector<std::string> Assembly::validate() const {
 
   // The contact list: pairs of live slots, a < b, named by their ids, each
   // once, in slot-pair order within each run; the vector run linear discs only.
+  // After a deletion the list still holds the old slots until the next step
+  // rebuilds it by id (slotsMoved_), so only then do its slots mean anything.
   const ContactList& l = list_;
   std::set<std::pair<int, int>> seen;
-  for (std::size_t k = 0; k < l.size(); ++k) {
+  for (std::size_t k = 0; k < (slotsMoved_ ? 0 : l.size()); ++k) {
     const int i = l.a[k], j = l.b[k];
     const std::string which = "contact " + std::to_string(k);
     if (i < 0 || i >= j || std::size_t(j) >= n) {

@@ -89,6 +89,13 @@ Checkpoint loadCheckpoint(const std::string& path, int threads) {
   } catch (const Error& e) {
     throw fault("FORMAT CORRUPT", "holds a scene that cannot be loaded: " + std::string(e.what()));
   }
+  // A scene whose every field reads well may still be one no run could reach
+  // (a negative density, an element off its slot): the invariants decide.
+  if (const std::vector<std::string> problems = c.manager->validate(); !problems.empty())
+    throw fault(
+        "FORMAT CORRUPT",
+        "holds a scene that fails its checks: " + problems.front() +
+            (problems.size() > 1 ? " (and " + std::to_string(problems.size() - 1) + " more)" : ""));
   return c;
 }
 

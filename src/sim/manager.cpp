@@ -30,6 +30,11 @@ void Manager::createLattice(lb::LatticeDef def) {
   // A fixed timestep gives tau (with a viscosity) or the viscosity (with tau).
   if (fixedTimestep_ && (!def.tau || !def.viscosity)) def.timestep = fixedTimestep_;
   auto lattice = std::make_unique<lb::Lattice>(lb::resolve(def));
+  // Extreme but finite settings (a viscosity of 1e-300 makes the timestep
+  // 1e296) can leave the first state itself not finite: refuse them here.
+  if (const std::vector<std::string> problems = lattice->validate(); !problems.empty())
+    throw Error("VALUE LATTICE", "these settings give the fluid a state that is not finite (" +
+                                     problems.front() + "): check -viscosity, -tau and -forcing");
   lattice->setThreads(threads_);
   lattice_ = std::move(lattice);
   machWarned_ = false;

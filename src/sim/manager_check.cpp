@@ -15,7 +15,12 @@ std::vector<std::string> Manager::validate() const {
   if (!gravity_.allFinite()) problems.push_back("gravity is not finite");
   if (lattice_) {
     for (std::string& p : lattice_->validate()) problems.push_back(std::move(p));
-    if (coupled_ && lattice_->coveredCells().size() != coupler_.coveredCells())
+    // A changed topology (an obstacle, new walls) drops the covered cells
+    // until the coupling measures them again before the next step, and a
+    // loaded scene's coupling has measured nothing yet: compare only when
+    // both hold cells.
+    if (coupled_ && !lattice_->coveredCells().empty() && coupler_.coveredCells() > 0 &&
+        lattice_->coveredCells().size() != coupler_.coveredCells())
       problems.push_back("the lattice's covered cells are not the coupling's");
   }
   for (std::string& p : assembly_.validate()) problems.push_back(std::move(p));
