@@ -19,7 +19,10 @@
 # tried, each wrapped in `catch`, so `sandflow -c "source DIR/fuzz.log"`
 # replays a run up to its crash. The last line printed is the summary:
 #   fuzz: seed S, N command lines (A accepted, R refused), ... 0 failures
-# Exit status 1 when any check failed.
+# Exit status 1 when any check failed. With -quiet 0 it also tallies accepted
+# and refused lines per command; FUZZ_SHOW=PATTERN (an environment variable,
+# a glob on the command's first words, e.g. "run") prints the refusals of the
+# matching commands, to see why scenes stop growing.
 
 set options [dict create -count 2000 -seed 1 -dir {} -slow 60 -quiet 1]
 if {[llength $argv] % 2} { error "usage: fuzz.tcl ?-count N? ?-seed S? ?-dir DIR? ?-slow S? ?-quiet 0|1?" }
@@ -405,7 +408,6 @@ proc mutantCheckpoint {} {
                         [binary format q 0] [binary format q -1] [binary format iu 0xffffffff] \
                         [binary format i -1] [binary format wu 0xffffffffffff] [binary format i 0] \
                         [binary format c 0xff] [binary format c 0] [binary format c 2]]]
-                    if {[catch {binary format q NaN}]} { set value [binary format iu 0xffffffff] }
                     set data [string replace $data $k [expr {$k + [string length $value] - 1}] $value]
                     set data [string range $data 0 [expr {$n - 1}]]
                     set payload [string range $data 28 end]
