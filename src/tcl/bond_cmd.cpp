@@ -7,9 +7,6 @@
 namespace sf::tcl {
 namespace {
 
-Session& sessionOf(ClientData data) {
-  return *static_cast<Session*>(data);
-}
 
 const OptionSpec kCreateOptions[] = {
     {"-stiffness", "k", "bond stiffness (default: the materials' -bondstiffness, the smaller)"},

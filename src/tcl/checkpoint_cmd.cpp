@@ -1,6 +1,9 @@
 // checkpoint save FILE, checkpoint load FILE ?-recordings 0|1?: the whole
 // scene in one file (io/checkpoint.hpp), with the session's view settings and
 // recordings beside the kernel's state.
+#include <cstring>
+#include <vector>
+
 #include "sandflow/io/checkpoint.hpp"
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/picture.hpp"
@@ -8,10 +11,6 @@
 
 namespace sf::tcl {
 namespace {
-
-Session& sessionOf(ClientData data) {
-  return *static_cast<Session*>(data);
-}
 
 const OptionSpec kLoadOptions[] = {
     {"-recordings", "0|1", "start the checkpoint's recordings again (default 1)"},
@@ -42,6 +41,7 @@ int CheckpointSave(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const
   if (recording(s, path))
     return fail(interp, "VALUE OUTPUT", "\"" + path + "\" is being recorded to");
   return guarded(interp, [&] {
+    requireConfined(s, path);
     io::saveCheckpoint(path, s.manager, sessionText(s));
     Tcl_SetObjResult(interp, objv[1]);
     return TCL_OK;
@@ -66,6 +66,29 @@ bool stagedView(Tcl_Interp* interp, Tcl_Obj* session, render::ViewOptions& view)
   return ok;
 }
 
+// Runs a checkpoint's recording command, which must be one that startRecorder
+// keeps (`output csv ...` or `record ...`): a file must not make
+// `checkpoint load` run any other command. Its words are run as they are,
+// without substitution. Returns "" or why it did not start.
+std::string restartRecording(Tcl_Interp* interp, Tcl_Obj* command) {
+  Tcl_Obj** words = nullptr;
+  int n = 0;
+  if (Tcl_ListObjGetElements(nullptr, command, &n, &words) != TCL_OK || n < 2)
+    return "not a recording's command";
+  // (as startRecorder names them: `record` is kept as imported, ::record)
+  const std::string noun = Tcl_GetString(words[0]);
+  const bool record = noun == "::sf::record" || noun == "::record";
+  const bool csv = (noun == "::sf::output" || noun == "::output") &&
+                   std::strcmp(Tcl_GetString(words[1]), "csv") == 0;
+  if (!record && !csv) return "not a recording's command";
+  // (the words outlive a change of the command's representation)
+  std::vector<Tcl_Obj*> held(words, words + n);
+  for (Tcl_Obj* w : held) Tcl_IncrRefCount(w);
+  const int code = Tcl_EvalObjv(interp, n, held.data(), TCL_EVAL_GLOBAL);
+  for (Tcl_Obj* w : held) Tcl_DecrRefCount(w);
+  return code == TCL_OK ? "" : Tcl_GetStringResult(interp);
+}
+
 // Starts the checkpoint's recordings again: CSV series continue their files;
 // the others are listed as not restarted, with the reason.
 Tcl_Obj* restartRecordings(Session& s, Tcl_Obj* session, bool restart) {
@@ -88,8 +111,8 @@ Tcl_Obj* restartRecordings(Session& s, Tcl_Obj* session, bool restart) {
       why = "-recordings 0";
     } else if (kind != "csv" && kind != "record") {
       why = "a " + kind + " recording cannot continue its file";
-    } else if (Tcl_EvalObjEx(s.interp, fields[2], TCL_EVAL_GLOBAL) != TCL_OK) {
-      why = Tcl_GetStringResult(s.interp);
+    } else {
+      why = restartRecording(s.interp, fields[2]);
     }
     Tcl_Obj* item[2] = {fields[1], why.empty() ? fields[2] : newString(why)};
     Tcl_ListObjAppendElement(nullptr, why.empty() ? started : skipped, Tcl_NewListObj(2, item));
@@ -113,6 +136,7 @@ int CheckpointLoad(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const
   const std::string path = Tcl_GetString(objv[1]);
   io::Checkpoint c;
   if (guarded(interp, [&] {
+        requireConfined(s, path);
         c = io::loadCheckpoint(path, s.manager.threads());
         return TCL_OK;
       }) != TCL_OK)

@@ -114,9 +114,6 @@ void CsvRecorder::finish() {
 
 namespace {
 
-Session& sessionOf(ClientData data) {
-  return *static_cast<Session*>(data);
-}
 
 // The columns of one element, in order (docs/output.md says what each is).
 constexpr const char* kElementColumns[] = {

@@ -112,9 +112,6 @@ struct Edit {
   std::optional<double> stress;  // NaN: remove the servo
 };
 
-Session& sessionOf(ClientData data) {
-  return *static_cast<Session*>(data);
-}
 
 bool getVec3(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, Eigen::Vector3d& out) {
   std::vector<double> v;

@@ -14,9 +14,6 @@
 namespace sf::tcl {
 namespace {
 
-Session& sessionOf(ClientData data) {
-  return *static_cast<Session*>(data);
-}
 
 // The view options of a GUI frame: `view configure`'s, at the widget's size,
 // over the world window the user panned and zoomed to ({} for the automatic one).

@@ -52,9 +52,6 @@ const char* const kForceSchemeNames[] = {"nodal", "guo", nullptr};
 const char* const kSideNames[] = {"left", "right", "bottom", "top", nullptr};
 const char* const kKindNames[] = {"periodic", "noslip", "slip", "velocity", "pressure", nullptr};
 
-Session& sessionOf(ClientData data) {
-  return *static_cast<Session*>(data);
-}
 
 bool parseWallSpec(Tcl_Interp* interp, Tcl_Obj* spec, lb::SideDef& side) {
   int n = 0;

@@ -33,9 +33,6 @@ const OptionSpec kOptions[] = {
     {"-poisson", "nu", "Poisson's ratio (Hertz-Mindlin)"},
     {nullptr, nullptr, nullptr}};
 
-Session& sessionOf(ClientData data) {
-  return *static_cast<Session*>(data);
-}
 
 Tcl_Obj* optionValue(const dem::Material& m, int k) {
   switch (k) {

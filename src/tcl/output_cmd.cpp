@@ -10,9 +10,6 @@
 namespace sf::tcl {
 namespace {
 
-Session& sessionOf(ClientData data) {
-  return *static_cast<Session*>(data);
-}
 
 // output list -> {FILE {kind csv|record|movie|vtk every K written N} ...}
 int OutputList(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {

@@ -65,11 +65,14 @@ void flushWarnings(Session& session) {
 
 }  // namespace sf::tcl
 
-extern "C" int Sandflow_Init(Tcl_Interp* interp) {
+namespace {
+
+int initialise(Tcl_Interp* interp, bool safe) {
   using namespace sf::tcl;
   if (Tcl_PkgRequire(interp, "Tcl", "8.6", 0) == nullptr) return TCL_ERROR;
   auto* session = new Session;
   session->interp = interp;
+  if (safe) confineToCurrentFolder(*session);
   Tcl_CallWhenDeleted(interp, deleteSession, session);
   Tcl_CreateExitHandler(finishAtExit, session);
   registerLatticeCommands(interp, session);
@@ -84,8 +87,18 @@ extern "C" int Sandflow_Init(Tcl_Interp* interp) {
   registerViewCommands(interp, session);
   registerRecordCommand(interp, session);
   registerPlotCommand(interp, session);
-  registerGuiCommands(interp, session);
+  if (!safe) registerGuiCommands(interp, session);  // no workbench in safe mode
   registerCheckpointCommands(interp, session);
   if (Tcl_Eval(interp, kWarnProc) != TCL_OK) return TCL_ERROR;
   return Tcl_PkgProvide(interp, "sandflow", SANDFLOW_VERSION);
+}
+
+}  // namespace
+
+extern "C" int Sandflow_Init(Tcl_Interp* interp) {
+  return initialise(interp, false);
+}
+
+extern "C" int Sandflow_SafeInit(Tcl_Interp* interp) {
+  return initialise(interp, true);
 }

@@ -4,3 +4,5 @@
 #include "sandflow/tcl/session.hpp"
 
 extern "C" __attribute__((used)) Tcl_PackageInitProc* const sandflowEntryPoint = Sandflow_Init;
+extern "C" __attribute__((used)) Tcl_PackageInitProc* const sandflowSafeEntryPoint =
+    Sandflow_SafeInit;

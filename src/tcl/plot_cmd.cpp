@@ -620,7 +620,7 @@ int checkLogAxes(Tcl_Interp* interp, const PlotOptions& o) {
   return TCL_OK;
 }
 
-int Plot(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+int Plot(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc < 3) {
     Tcl_WrongNumArgs(interp, 1, objv, "OUT.png CSVFILE ?-option value ...?");
     return TCL_ERROR;
@@ -636,7 +636,10 @@ int Plot(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     return fail(interp, "RESOURCE GNUPLOT",
                 "plot needs gnuplot, which is not on the PATH: install it (Debian package "
                 "gnuplot-nox)");
+  const Session& s = sessionOf(data);
   return guarded(interp, [&] {
+    requireConfined(s, out);
+    requireConfined(s, path);
     // Rows being recorded are in the file already: recorders flush each row.
     // Each file is read once, however many series it gives.
     std::map<std::string, Csv> files;
@@ -668,7 +671,10 @@ int Plot(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     for (const SeriesSpec& spec : o.series) {
       const std::string file = spec.file.value_or(path);
       auto found = files.find(file);
-      if (found == files.end()) found = files.emplace(file, readCsv(file)).first;
+      if (found == files.end()) {
+        requireConfined(s, file);
+        found = files.emplace(file, readCsv(file)).first;
+      }
       const Csv& from = found->second;
       const int xcol = columnIndex(from, spec.x.value_or(csv.names[x]), file, path);
       const int ycol = columnIndex(from, spec.y, file, path);

@@ -11,9 +11,6 @@
 namespace sf::tcl {
 namespace {
 
-Session& sessionOf(ClientData data) {
-  return *static_cast<Session*>(data);
-}
 
 enum Quantity {
   qKinetic,

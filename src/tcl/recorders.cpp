@@ -97,6 +97,11 @@ int closeRecorders(Session& s, const std::string* path) {
 }
 
 int startRecorder(Session& s, std::unique_ptr<Recorder> recorder) {
+  if (guarded(s.interp, [&] {
+        requireConfined(s, recorder->path());
+        return TCL_OK;
+      }) != TCL_OK)
+    return TCL_ERROR;
   if (recording(s, recorder->path()))
     return fail(s.interp, "VALUE OUTPUT",
                 "\"" + recorder->path() + "\" is already being recorded to; output close it first");

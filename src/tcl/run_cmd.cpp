@@ -10,9 +10,6 @@
 namespace sf::tcl {
 namespace {
 
-Session& sessionOf(ClientData data) {
-  return *static_cast<Session*>(data);
-}
 
 const OptionSpec kRunOptions[] = {
     {"-every", "K script", "evaluate script every K steps; break stops the run"},

@@ -57,9 +57,6 @@ const int kSolidRatioSubcells[] = {coupling::kExact, 1, 2, 4, 8};
 const char* const kInteriorNames[] = {"equilibrium", "collide", nullptr};
 const char* const kCouplingNames[] = {"explicit", "implicit", nullptr};
 
-Session& sessionOf(ClientData data) {
-  return *static_cast<Session*>(data);
-}
 
 Tcl_Obj* optionValue(const sim::Manager& m, int k) {
   switch (k) {

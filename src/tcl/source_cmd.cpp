@@ -5,9 +5,6 @@
 namespace sf::tcl {
 namespace {
 
-Session& sessionOf(ClientData data) {
-  return *static_cast<Session*>(data);
-}
 
 const OptionSpec kOptions[] = {
     {"-acceleration", "{ax ay}", "body acceleration of each clone (default {0 0})"},

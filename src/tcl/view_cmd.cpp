@@ -13,10 +13,6 @@
 namespace sf::tcl {
 namespace {
 
-Session& sessionOf(ClientData data) {
-  return *static_cast<Session*>(data);
-}
-
 // The back end in effect: the loaded one, else the choice.
 std::string offscreenShown() {
   const std::string loaded = loadedOffscreen();
@@ -123,6 +119,7 @@ int Snapshot(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
   render::ViewOptions v = s.view;
   if (!parseViewOptions(interp, objc, objv, 2, v, nullptr)) return TCL_ERROR;
   return guarded(interp, [&] {
+    requireConfined(s, path);
     const render::Image image = takePicture(s.manager, v);
     io::writeAtomically({{path, [&](std::ostream& out) {
                             try {

@@ -115,6 +115,7 @@ int OutputVtk(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
   std::vector<io::FileContent> files;
   for (const Part& p : partsOf(s.manager, prefix, false)) files.push_back(p.file);
   return guarded(interp, [&] {
+    for (const io::FileContent& f : files) requireConfined(s, f.path);
     io::writeAtomically(files);  // all appear, or none
     Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
     for (const io::FileContent& f : files)

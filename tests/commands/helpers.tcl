@@ -82,3 +82,36 @@ proc readFile {path} {
     close $f
     return $data
 }
+
+# Runs the application with the given arguments (and standard input) and
+# returns {status stdout stderr}; stdout and stderr without the final newline.
+proc runApp {arguments {input ""}} {
+    set dir [temporaryDirectory]
+    set out [file join $dir app-[pid].out]
+    set err [file join $dir app-[pid].err]
+    set in [file join $dir app-[pid].in]
+    set f [open $in w]
+    puts -nonewline $f $input
+    close $f
+    set status 0
+    if {[catch {exec [sfApp] {*}$arguments < $in > $out 2> $err} message options]} {
+        set code [dict get $options -errorcode]
+        if {[lindex $code 0] ne "CHILDSTATUS"} {
+            file delete -- $in $out $err
+            return -options $options $message
+        }
+        set status [lindex $code 2]
+    }
+    set result [list $status [string trimright [readFile $out] \n] [string trimright [readFile $err] \n]]
+    file delete -- $in $out $err
+    return $result
+}
+
+# Writes a script file in the scratch folder and returns its path.
+proc scriptFile {name body} {
+    set path [file join [temporaryDirectory] $name]
+    set f [open $path w]
+    puts -nonewline $f $body
+    close $f
+    return $path
+}

@@ -74,8 +74,16 @@ struct Session {
   // The workbench view's last picture without its overlay (rubber bands, the
   // selection), so that a drag redraws only what moves.
   std::unique_ptr<render::DrawList> viewList;
+  // Safe mode (Sandflow_SafeInit): the only folder whose files the commands
+  // read and write; empty when they may use any.
+  std::string confinedTo;
   ~Session();
 };
+
+// A command's client data: the session it was registered with.
+inline Session& sessionOf(ClientData data) {
+  return *static_cast<Session*>(data);
+}
 
 // Whether a recorder writes to this path (as the same file by any name).
 bool recording(const Session& s, const std::string& path);
@@ -88,6 +96,11 @@ int closeRecorders(Session& s, const std::string* path);
 int startRecorder(Session& s, std::unique_ptr<Recorder> recorder);
 // The same, keeping the command that starts it (objv) for checkpoints.
 int startRecorder(Session& s, std::unique_ptr<Recorder> recorder, int objc, Tcl_Obj* const objv[]);
+
+// Safe mode: confines the session's files to the current folder; and throws
+// Error (SAFE PATH) for a path outside it, when confined.
+void confineToCurrentFolder(Session& s);
+void requireConfined(const Session& s, const std::string& path);
 
 // Refuses (BUSY RUN) a command that would replace or advance the scene while
 // a run's tick serves the workbench; TCL_OK otherwise.
@@ -117,3 +130,6 @@ void registerCheckpointCommands(Tcl_Interp* interp, Session* session);
 }  // namespace sf::tcl
 
 extern "C" int Sandflow_Init(Tcl_Interp* interp);
+// The same commands for a safe interpreter (Tcl calls it for `load` into one):
+// their files confined to the folder current at the time (docs/robustness.md).
+extern "C" int Sandflow_SafeInit(Tcl_Interp* interp);
