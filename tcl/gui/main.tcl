@@ -3,7 +3,13 @@
 # property panel (right), run controls above and the status bar below. Every
 # gesture runs a command a user could type; see docs/gui.md.
 
+# Tk reads its own options (-geometry, -display, -help, ...) from argv as it
+# loads, which would take a script's -g or -help: it sees none of them.
+set ::sf::scriptArgv $::argv
+set ::argv {}
 package require Tk 8.6
+set ::argv $::sf::scriptArgv
+unset ::sf::scriptArgv
 catch {package require tooltip}
 
 namespace eval ::sf::gui {
