@@ -10,14 +10,20 @@
 #
 # -timestep auto lets tau = 1 set the timestep (for refinement studies).
 
-set options [dict create -cells 200 -steps 10000 -every 1000 -nu 0.001 -forcing 0.0025 \
-                 -timestep 0.005 -out {}]
-if {[llength $argv] % 2} { error "usage: channel-disc.tcl ?-option value ...?" }
-foreach {key value} $argv {
-    if {![dict exists $options $key]} {
-        error "bad option \"$key\": must be [join [dict keys $options] {, }]"
-    }
-    dict set options $key $value
+# The options (tcllib's cmdline; -help lists them), each ${-name} below.
+package require cmdline
+set options {}
+foreach {key value} [cmdline::getoptions argv {
+    {cells.arg    200     "lattice cells across x"}
+    {steps.arg    10000   "steps to run"}
+    {every.arg    1000    "steps between printed lines"}
+    {nu.arg       0.001   "kinematic viscosity"}
+    {forcing.arg  0.0025  "forcing in x"}
+    {timestep.arg 0.005   "timestep, or auto: tau = 1 sets it (for refinement studies)"}
+    {out.arg      {}      "folder for ParaView files at the end"}
+}] { dict set options -$key $value }
+if {[llength $argv]} {
+    error "channel-disc.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
 }
 dict with options {}
 

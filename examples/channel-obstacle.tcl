@@ -5,17 +5,19 @@
 #
 #   sandflow examples/channel-obstacle.tcl ?-steps N? ?-every K? ?-out DIR?
 
-set options [dict create -steps 40000 -every 4000 -out out/channel-obstacle]
-if {[llength $argv] % 2} { error "usage: channel-obstacle.tcl ?-steps N? ?-every K? ?-out DIR?" }
-foreach {key value} $argv {
-    if {![dict exists $options $key]} {
-        error "bad option \"$key\": must be -steps, -every, or -out"
-    }
-    dict set options $key $value
+# The options (tcllib's cmdline; -help lists them), each ${-name} below.
+package require cmdline
+set options {}
+foreach {key value} [cmdline::getoptions argv {
+    {steps.arg 40000                "steps to run"}
+    {every.arg 4000                 "steps between progress lines and ParaView files"}
+    {out.arg   out/channel-obstacle "folder for the ParaView files and flow.png"}
+}] { dict set options -$key $value }
+if {[llength $argv]} {
+    error "channel-obstacle.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
 }
-set steps [dict get $options -steps]
-set every [dict get $options -every]
-set out [dict get $options -out]
+dict with options {}
+set out ${-out}
 file mkdir $out
 
 # Fluid in consistent units; the forcing accelerates it from rest.
@@ -47,7 +49,7 @@ proc report {} {
     incr frame
 }
 report
-run $steps -every $every report
+run ${-steps} -every ${-every} report
 # A picture of the final flow (headless: OSMesa or EGL).
 snapshot [file join $out flow.png] -field velocity -vectors 1 -size {1000 560}
 set umax [expr {[dict get [sim info] mach] * [dict get [lattice info] c]}]

@@ -8,14 +8,20 @@
 #   sandflow examples/couette.tcl ?-cells N? ?-tau tau? ?-time T? ?-omega1 w1?
 #            ?-omega2 w2? ?-translate {vx vy}? ?-solidratio exact|1|2|4|8?
 
-set options [dict create -cells 40 -tau 1.0 -time 2.5 -omega1 0.0 -omega2 0.1 \
-                 -translate {0 0} -solidratio exact]
-if {[llength $argv] % 2} { error "usage: couette.tcl ?-option value ...?" }
-foreach {key value} $argv {
-    if {![dict exists $options $key]} {
-        error "bad option \"$key\": must be [join [dict keys $options] {, }]"
-    }
-    dict set options $key $value
+# The options (tcllib's cmdline; -help lists them), each ${-name} below.
+package require cmdline
+set options {}
+foreach {key value} [cmdline::getoptions argv {
+    {cells.arg      40     "lattice cells across the unit square"}
+    {tau.arg        1.0    "relaxation time"}
+    {time.arg       2.5    "how long to run"}
+    {omega1.arg     0.0    "the inner cylinder's angular velocity"}
+    {omega2.arg     0.1    "the outer cylinder's angular velocity"}
+    {translate.arg  {0 0}  "velocity {vx vy} added to both cylinders"}
+    {solidratio.arg exact  "solid ratio: exact, or 1, 2, 4, 8 subcells a side"}
+}] { dict set options -$key $value }
+if {[llength $argv]} {
+    error "couette.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
 }
 dict with options {}
 set r1 0.1

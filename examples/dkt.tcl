@@ -12,14 +12,21 @@
 # how long to run, in units of d / (mean settling speed) estimated from the
 # leading disc's speed.
 
-set options [dict create -cells 120 -nu 0.02 -g 0.08 -height 100 -time 100 -every 200 \
-                 -coupling explicit -csv {}]
-if {[llength $argv] % 2} { error "usage: dkt.tcl ?-option value ...?" }
-foreach {key value} $argv {
-    if {![dict exists $options $key]} {
-        error "bad option \"$key\": must be [join [dict keys $options] {, }]"
-    }
-    dict set options $key $value
+# The options (tcllib's cmdline; -help lists them), each ${-name} below.
+package require cmdline
+set options {}
+foreach {key value} [cmdline::getoptions argv {
+    {cells.arg    120       "lattice cells across the channel (the thesis: 120, the discs then 15 across)"}
+    {nu.arg       0.02      "kinematic viscosity"}
+    {g.arg        0.08      "gravity"}
+    {height.arg   100       "the channel's height in d (the thesis: 100)"}
+    {time.arg     100       "how long to run, in d / (mean settling speed of the leading disc)"}
+    {every.arg    200       "steps between samples"}
+    {coupling.arg explicit  "fluid coupling: explicit or implicit"}
+    {csv.arg      {}        "CSV file for the history"}
+}] { dict set options -$key $value }
+if {[llength $argv]} {
+    error "dkt.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
 }
 dict with options {}
 set d 1.0

@@ -4,10 +4,20 @@
 #
 # Two scenes: grains settling in a closed box of fluid (coupled), and a
 # bonded block of grains dropped on a floor (elements only).
-set options [dict merge {-out docs/img -quick 0} $argv]
-set out [dict get $options -out]
+# The options (tcllib's cmdline; -help lists them), each ${-name} below.
+package require cmdline
+set options {}
+foreach {key value} [cmdline::getoptions argv {
+    {out.arg   docs/img "folder for the pictures"}
+    {quick.arg 0        "1: a tenth of the settling steps (for tests)"}
+}] { dict set options -$key $value }
+if {[llength $argv]} {
+    error "pictures.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
+}
+dict with options {}
+set out ${-out}
 file mkdir $out
-set steps [expr {[dict get $options -quick] ? 300 : 3000}]
+set steps [expr {${-quick} ? 300 : 3000}]
 
 # ---- grains settling in fluid -------------------------------------------------
 # Units with the grain diameter d = 1 and fluid density 1; 10 cells per d.

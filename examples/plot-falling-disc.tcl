@@ -10,13 +10,16 @@
 # DIR/plot-falling-disc.png and DIR/plot-falling-disc-energy.png, and prints
 # the files and the height of each bounce's top.
 
-set options [dict create -out . -time 1.5 -every 20]
-if {[llength $argv] % 2} { error "usage: plot-falling-disc.tcl ?-out DIR? ?-time T? ?-every K?" }
-foreach {key value} $argv {
-    if {![dict exists $options $key]} {
-        error "bad option \"$key\": must be [join [dict keys $options] {, }]"
-    }
-    dict set options $key $value
+# The options (tcllib's cmdline; -help lists them), each ${-name} below.
+package require cmdline
+set options {}
+foreach {key value} [cmdline::getoptions argv {
+    {out.arg   .    "folder for the CSV files and the plots"}
+    {time.arg  1.5  "how long to run"}
+    {every.arg 20   "steps between the CSV files' rows"}
+}] { dict set options -$key $value }
+if {[llength $argv]} {
+    error "plot-falling-disc.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
 }
 dict with options {}
 file mkdir ${-out}

@@ -13,14 +13,22 @@
 # The thesis's reference material does not give Feng et al.'s gravity or
 # viscosity; the default g = 1.2 with nu = 0.02 settles at Re near 6.
 
-set options [dict create -cells 60 -ratio 2.0 -nu 0.02 -g 1.2 -fall 8 -every 500 \
-                 -integrator central -coupling explicit -csv {}]
-if {[llength $argv] % 2} { error "usage: sediment-disc.tcl ?-option value ...?" }
-foreach {key value} $argv {
-    if {![dict exists $options $key]} {
-        error "bad option \"$key\": must be [join [dict keys $options] {, }]"
-    }
-    dict set options $key $value
+# The options (tcllib's cmdline; -help lists them), each ${-name} below.
+package require cmdline
+set options {}
+foreach {key value} [cmdline::getoptions argv {
+    {cells.arg      60        "lattice cells across the channel (the thesis: 180, the disc then 120 across)"}
+    {ratio.arg      2.0       "the disc's density over the fluid's"}
+    {nu.arg         0.02      "kinematic viscosity"}
+    {g.arg          1.2       "gravity"}
+    {fall.arg       8         "how far to let the disc fall, in diameters"}
+    {every.arg      500       "steps between printed lines"}
+    {integrator.arg central   "integrator: central, euler or verlet"}
+    {coupling.arg   explicit  "fluid coupling: explicit or implicit"}
+    {csv.arg        {}        "CSV file for the history"}
+}] { dict set options -$key $value }
+if {[llength $argv]} {
+    error "sediment-disc.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
 }
 dict with options {}
 set d 1.0

@@ -4,13 +4,16 @@
 #
 #   sandflow examples/source-ring.tcl ?-steps N?
 
-set steps 20000
-foreach {key value} $argv {
-    switch -- $key {
-        -steps { set steps $value }
-        default { error "bad option \"$key\": must be -steps" }
-    }
+# The options (tcllib's cmdline; -help lists them), each ${-name} below.
+package require cmdline
+set options {}
+foreach {key value} [cmdline::getoptions argv {
+    {steps.arg 20000 "steps to run (a line every tenth)"}
+}] { dict set options -$key $value }
+if {[llength $argv]} {
+    error "source-ring.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
 }
+dict with options {}
 
 material create rock -density 2650 -kn 1e7 -ks 1e7 -friction 0.5 -restitution 0.3
 
@@ -37,7 +40,7 @@ proc sourceRing {n radius grain accel} {
 sourceRing 16 0.4 0.05 20.0
 
 puts [format "timestep %.3g s (critical %.3g s)" [sim cget -timestep] [dict get [sim info] critical]]
-run $steps -every [expr {$steps / 10}] {
+run ${-steps} -every [expr {${-steps} / 10}] {
     set s [sim info]
     puts [format "t = %.3f s  elements %d  contacts %d  kinetic %.3g J/m" \
         [dict get $s time] [dict get $s elements] [dict get $s contacts] [dict get $s kinetic]]
