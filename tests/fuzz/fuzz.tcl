@@ -39,6 +39,9 @@ if {${-dir} eq {}} {
 }
 file mkdir ${-dir}
 set dir [file normalize ${-dir}]
+# A mutated line may name an output file by a bare word: it lands here, not
+# wherever the fuzzer was started.
+cd $dir
 # A run depends on the files of this run only: those of an earlier one go.
 foreach pattern {ck*.sfck mutant.* vtk* series* e*.csv r*.csv shot*.png plot.png fuzz.log nosuchdir} {
     file delete -force {*}[glob -nocomplain -directory $dir $pattern]
@@ -304,7 +307,7 @@ proc gen_sim {} {
 }
 proc gen_run {} {
     choose { \
-        6 {list run [expr {[chance 0.03] ? [pick {0 -1 abc {} 1.5 NaN \u221e}] : [between 1 6]}]} \
+        6 {list run [if {[chance 0.03]} {pick {0 -1 abc {} 1.5 NaN \u221e}} else {between 1 6}]} \
         2 {list step} \
         1 {list run [between 2 6] -every [maybe [between 1 3]] \
                [pick {{sim info} break {error "stopped by the fuzzer"} {element ids} {incr ::everyCount}}]}}
@@ -488,7 +491,7 @@ set seed ${-seed}
 set total 0
 set log [open [file join $dir fuzz.log] w]
 fconfigure $log -encoding utf-8
-puts $log "# sandflow fuzz, seed $seed: each line one command tried\nproc ::sf::warn {m} {}"
+puts $log "# sandflow fuzz, seed $seed: each line one command tried\nproc ::sf::warn {m} {}\ncd [list $dir]"
 set built 0   ;# whether the scene since the last reset/load holds anything
 for {set i 1} {$i <= ${-count}} {incr i} {
     set command [generate [weighted $generators]]
