@@ -51,6 +51,14 @@ bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int s
     if (!f.band(g.origin.y() + (j0 + b) * h, g.origin.y() + (j0 + b + 1) * h, band)) return false;
     Row& r = rows[b + 1];
     if (band.lo > band.hi) continue;
+    // A band's ends may lie far beyond the lattice (an element at x = 1e23):
+    // brought to a cell or two past the clip first, so that they convert to
+    // int and the searches below stay short. Which cells in [i0, i1] the band
+    // touches or holds does not change.
+    const double left = cellLo(i0 - 2), right = cellLo(i1 + 3);
+    band.lo = std::clamp(band.lo, left, right), band.hi = std::clamp(band.hi, left, right);
+    band.fullLo = std::clamp(band.fullLo, left, right);
+    band.fullHi = std::clamp(band.fullHi, left, right);
     r.lo = std::max(i0, int(std::floor((band.lo - ox) / h)));
     r.hi = std::min(i1, int(std::floor((band.hi - ox) / h)));
     if (r.lo > r.hi) continue;
@@ -145,10 +153,13 @@ void cover(const Footprint& f, const Vec2& reference, const Grid& g, int subcell
   // The cells to visit, unwrapped: the footprint's box, or the whole lattice.
   int i0 = 0, i1 = g.nx - 1, j0 = 0, j1 = g.ny - 1;
   if (!f.everywhere) {
-    i0 = int(std::floor((f.box.lo.x() - g.origin.x()) / g.h));
-    i1 = int(std::floor((f.box.hi.x() - g.origin.x()) / g.h));
-    j0 = int(std::floor((f.box.lo.y() - g.origin.y()) / g.h));
-    j1 = int(std::floor((f.box.hi.y() - g.origin.y()) / g.h));
+    // An element may be anywhere (x = 1e23), and an int ends at 2^31: so far
+    // out, a clamped index still touches no cell of its footprint.
+    auto cellOf = [&](double x, double origin) {
+      return int(std::floor(std::clamp((x - origin) / g.h, -1e9, 1e9)));
+    };
+    i0 = cellOf(f.box.lo.x(), g.origin.x()), i1 = cellOf(f.box.hi.x(), g.origin.x());
+    j0 = cellOf(f.box.lo.y(), g.origin.y()), j1 = cellOf(f.box.hi.y(), g.origin.y());
     // A box wider than a periodic lattice would visit cells twice.
     if (g.periodicX) i1 = std::min(i1, i0 + g.nx - 1);
     if (g.periodicY) j1 = std::min(j1, j0 + g.ny - 1);
