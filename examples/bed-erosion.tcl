@@ -53,10 +53,8 @@
 # 625 s with g = 0.5 (355 and 400 s of CPU); t = 200 (scripts/validate's)
 # 350-395 s.
 
-# The options (tcllib's cmdline; -help lists them), each ${-name} below.
-package require cmdline
-set options {}
-foreach {key value} [cmdline::getoptions argv {
+# The options (-help lists them), each ${-name} below.
+set options [::sf::scriptOptions {
     {g.arg          0.5       "gravity on the grains (the thesis's two runs: 0 and 0.5)"}
     {forcing.arg    0.04      "horizontal forcing on the fluid from t = 0 (a pressure gradient)"}
     {length.arg     300       "the channel's length (-length / 4 sources)"}
@@ -73,10 +71,7 @@ foreach {key value} [cmdline::getoptions argv {
     {moving.arg     0.2       "speed above which a grain is moving"}
     {coupling.arg   implicit  "fluid coupling: implicit or explicit"}
     {solidratio.arg 2         "solid ratio: exact, or 1, 2, 4, 8 subcells a side"}
-}] { dict set options -$key $value }
-if {[llength $argv]} {
-    error "bed-erosion.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
-}
+}]
 dict with options {}
 set Lx [expr {double(${-length})}]
 set Ly [expr {double(${-height})}]

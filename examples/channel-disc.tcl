@@ -10,10 +10,8 @@
 #
 # -timestep auto lets tau = 1 set the timestep (for refinement studies).
 
-# The options (tcllib's cmdline; -help lists them), each ${-name} below.
-package require cmdline
-set options {}
-foreach {key value} [cmdline::getoptions argv {
+# The options (-help lists them), each ${-name} below.
+set options [::sf::scriptOptions {
     {cells.arg    200     "lattice cells across x"}
     {steps.arg    10000   "steps to run"}
     {every.arg    1000    "steps between printed lines"}
@@ -21,10 +19,7 @@ foreach {key value} [cmdline::getoptions argv {
     {forcing.arg  0.0025  "forcing in x"}
     {timestep.arg 0.005   "timestep, or auto: tau = 1 sets it (for refinement studies)"}
     {out.arg      {}      "folder for ParaView files at the end"}
-}] { dict set options -$key $value }
-if {[llength $argv]} {
-    error "channel-disc.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
-}
+}]
 dict with options {}
 
 if {${-timestep} ne "auto"} { sim configure -timestep ${-timestep} }

@@ -5,17 +5,12 @@
 #
 #   sandflow examples/channel-obstacle.tcl ?-steps N? ?-every K? ?-out DIR?
 
-# The options (tcllib's cmdline; -help lists them), each ${-name} below.
-package require cmdline
-set options {}
-foreach {key value} [cmdline::getoptions argv {
+# The options (-help lists them), each ${-name} below.
+set options [::sf::scriptOptions {
     {steps.arg 40000                "steps to run"}
     {every.arg 4000                 "steps between progress lines and ParaView files"}
     {out.arg   out/channel-obstacle "folder for the ParaView files and flow.png"}
-}] { dict set options -$key $value }
-if {[llength $argv]} {
-    error "channel-obstacle.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
-}
+}]
 dict with options {}
 set out ${-out}
 file mkdir $out

@@ -8,10 +8,8 @@
 #   sandflow examples/couette.tcl ?-cells N? ?-tau tau? ?-time T? ?-omega1 w1?
 #            ?-omega2 w2? ?-translate {vx vy}? ?-solidratio exact|1|2|4|8?
 
-# The options (tcllib's cmdline; -help lists them), each ${-name} below.
-package require cmdline
-set options {}
-foreach {key value} [cmdline::getoptions argv {
+# The options (-help lists them), each ${-name} below.
+set options [::sf::scriptOptions {
     {cells.arg      40     "lattice cells across the unit square"}
     {tau.arg        1.0    "relaxation time"}
     {time.arg       2.5    "how long to run"}
@@ -19,10 +17,7 @@ foreach {key value} [cmdline::getoptions argv {
     {omega2.arg     0.1    "the outer cylinder's angular velocity"}
     {translate.arg  {0 0}  "velocity {vx vy} added to both cylinders"}
     {solidratio.arg exact  "solid ratio: exact, or 1, 2, 4, 8 subcells a side"}
-}] { dict set options -$key $value }
-if {[llength $argv]} {
-    error "couette.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
-}
+}]
 dict with options {}
 set r1 0.1
 set r2 0.3

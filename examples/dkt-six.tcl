@@ -40,10 +40,8 @@
 # other work): 120 x 1500 cells (180,000 nodes), about 36,000 steps: 126 s
 # for the six discs, 118 s for one disc or the pair.
 
-# The options (tcllib's cmdline; -help lists them), each ${-name} below.
-package require cmdline
-set options {}
-foreach {key value} [cmdline::getoptions argv {
+# The options (-help lists them), each ${-name} below.
+set options [::sf::scriptOptions {
     {count.arg   6     "discs: 6, or 1 (one disc) or 2 (case E's pair) for comparison"}
     {cells.arg   120   "lattice cells across the channel (the thesis: 120, the discs then 15 across)"}
     {height.arg  100   "the channel's height in d (the thesis: 100)"}
@@ -56,10 +54,7 @@ foreach {key value} [cmdline::getoptions argv {
     {frames.arg  8     "pictures between the start and the end (with -out)"}
     {out.arg     {}    "folder for pictures, the movie and dkt-six.csv"}
     {csv.arg     {}    "CSV file for the history"}
-}] { dict set options -$key $value }
-if {[llength $argv]} {
-    error "dkt-six.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
-}
+}]
 dict with options {}
 if {${-count} ni {1 2 6}} { error "bad -count \"${-count}\": must be 1, 2 or 6" }
 set d 1.0

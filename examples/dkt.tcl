@@ -12,10 +12,8 @@
 # how long to run, in units of d / (mean settling speed) estimated from the
 # leading disc's speed.
 
-# The options (tcllib's cmdline; -help lists them), each ${-name} below.
-package require cmdline
-set options {}
-foreach {key value} [cmdline::getoptions argv {
+# The options (-help lists them), each ${-name} below.
+set options [::sf::scriptOptions {
     {cells.arg    120       "lattice cells across the channel (the thesis: 120, the discs then 15 across)"}
     {nu.arg       0.02      "kinematic viscosity"}
     {g.arg        0.08      "gravity"}
@@ -24,10 +22,7 @@ foreach {key value} [cmdline::getoptions argv {
     {every.arg    200       "steps between samples"}
     {coupling.arg explicit  "fluid coupling: explicit or implicit"}
     {csv.arg      {}        "CSV file for the history"}
-}] { dict set options -$key $value }
-if {[llength $argv]} {
-    error "dkt.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
-}
+}]
 dict with options {}
 set d 1.0
 set L [expr {8.0 * $d}]

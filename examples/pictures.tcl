@@ -4,16 +4,11 @@
 #
 # Two scenes: grains settling in a closed box of fluid (coupled), and a
 # bonded block of grains dropped on a floor (elements only).
-# The options (tcllib's cmdline; -help lists them), each ${-name} below.
-package require cmdline
-set options {}
-foreach {key value} [cmdline::getoptions argv {
+# The options (-help lists them), each ${-name} below.
+set options [::sf::scriptOptions {
     {out.arg   docs/img "folder for the pictures"}
     {quick.arg 0        "1: a tenth of the settling steps (for tests)"}
-}] { dict set options -$key $value }
-if {[llength $argv]} {
-    error "pictures.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
-}
+}]
 dict with options {}
 set out ${-out}
 file mkdir $out

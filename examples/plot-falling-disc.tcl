@@ -10,17 +10,12 @@
 # DIR/plot-falling-disc.png and DIR/plot-falling-disc-energy.png, and prints
 # the files and the height of each bounce's top.
 
-# The options (tcllib's cmdline; -help lists them), each ${-name} below.
-package require cmdline
-set options {}
-foreach {key value} [cmdline::getoptions argv {
+# The options (-help lists them), each ${-name} below.
+set options [::sf::scriptOptions {
     {out.arg   .    "folder for the CSV files and the plots"}
     {time.arg  1.5  "how long to run"}
     {every.arg 20   "steps between the CSV files' rows"}
-}] { dict set options -$key $value }
-if {[llength $argv]} {
-    error "plot-falling-disc.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
-}
+}]
 dict with options {}
 file mkdir ${-out}
 

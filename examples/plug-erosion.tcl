@@ -65,10 +65,8 @@
 # On this 2-core machine, one thread, shared: about 80 s of CPU (1.5-3.5
 # minutes of wall time) per run, a minute more with the movie.
 
-# The options (tcllib's cmdline; -help lists them), each ${-name} below.
-package require cmdline
-set options {}
-foreach {key value} [cmdline::getoptions argv {
+# The options (-help lists them), each ${-name} below.
+set options [::sf::scriptOptions {
     {bonded.arg     0         "1: bond the plug's discs"}
     {length.arg     100       "the channel's length (the thesis: 100)"}
     {height.arg     40        "the channel's height (the thesis: 40)"}
@@ -86,10 +84,7 @@ foreach {key value} [cmdline::getoptions argv {
     {threads.arg    0         "threads of the step (0: the default)"}
     {movie.arg      1         "1: plug.mp4 with -out, when ffmpeg is installed"}
     {out.arg        {}        "folder for the CSV files, pictures and the movie"}
-}] { dict set options -$key $value }
-if {[llength $argv]} {
-    error "plug-erosion.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
-}
+}]
 dict with options {}
 # The drive: bonds of strength 1.5 hold against a larger one than friction does.
 if {${-forcing} eq {}} { set -forcing [expr {${-bonded} ? 0.012 : 0.003}] }

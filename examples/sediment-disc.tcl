@@ -13,10 +13,8 @@
 # The thesis's reference material does not give Feng et al.'s gravity or
 # viscosity; the default g = 1.2 with nu = 0.02 settles at Re near 6.
 
-# The options (tcllib's cmdline; -help lists them), each ${-name} below.
-package require cmdline
-set options {}
-foreach {key value} [cmdline::getoptions argv {
+# The options (-help lists them), each ${-name} below.
+set options [::sf::scriptOptions {
     {cells.arg      60        "lattice cells across the channel (the thesis: 180, the disc then 120 across)"}
     {ratio.arg      2.0       "the disc's density over the fluid's"}
     {nu.arg         0.02      "kinematic viscosity"}
@@ -26,10 +24,7 @@ foreach {key value} [cmdline::getoptions argv {
     {integrator.arg central   "integrator: central, euler or verlet"}
     {coupling.arg   explicit  "fluid coupling: explicit or implicit"}
     {csv.arg        {}        "CSV file for the history"}
-}] { dict set options -$key $value }
-if {[llength $argv]} {
-    error "sediment-disc.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
-}
+}]
 dict with options {}
 set d 1.0
 set L [expr {1.5 * $d}]

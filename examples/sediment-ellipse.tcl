@@ -42,10 +42,8 @@
 # two hours here, estimated from the node updates per second); the
 # shorter channel gives the same history (build/notes/validation-c.md).
 
-# The options (tcllib's cmdline; -help lists them), each ${-name} below.
-package require cmdline
-set options {}
-foreach {key value} [cmdline::getoptions argv {
+# The options (-help lists them), each ${-name} below.
+set options [::sf::scriptOptions {
     {ratio.arg  1.0015 "the ellipse's density over the fluid's (the thesis: 1.0015, 1.005)"}
     {cells.arg  60     "lattice cells across the channel (the thesis: 100, the ellipse then 20 long)"}
     {height.arg 60     "the channel's height in a (the thesis: 150)"}
@@ -60,10 +58,7 @@ foreach {key value} [cmdline::getoptions argv {
     {frames.arg 8      "pictures between the start and the end (with -out)"}
     {out.arg    {}     "folder for pictures, the movie and ellipse.csv"}
     {csv.arg    {}     "CSV file for the history"}
-}] { dict set options -$key $value }
-if {[llength $argv]} {
-    error "sediment-ellipse.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
-}
+}]
 dict with options {}
 set a 1.0
 set W [expr {5.0 * $a}]

@@ -4,15 +4,10 @@
 #
 #   sandflow examples/source-ring.tcl ?-steps N?
 
-# The options (tcllib's cmdline; -help lists them), each ${-name} below.
-package require cmdline
-set options {}
-foreach {key value} [cmdline::getoptions argv {
+# The options (-help lists them), each ${-name} below.
+set options [::sf::scriptOptions {
     {steps.arg 20000 "steps to run (a line every tenth)"}
-}] { dict set options -$key $value }
-if {[llength $argv]} {
-    error "source-ring.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
-}
+}]
 dict with options {}
 
 material create rock -density 2650 -kn 1e7 -ks 1e7 -friction 0.5 -restitution 0.3

@@ -56,10 +56,8 @@
 # 20,000 steps of fracturing or 5,000 of breakout; 80-180 s (fracturing) or
 # 45-75 s (breakout) of wall-clock time on the shared machine.
 
-# The options (tcllib's cmdline; -help lists them), each ${-name} below.
-package require cmdline
-set options {}
-foreach {key value} [cmdline::getoptions argv {
+# The options (-help lists them), each ${-name} below.
+set options [::sf::scriptOptions {
     {mode.arg        fracture "fracture (a pressurized hole) or breakout (an empty one)"}
     {stress.arg      neutral  "confining stress: neutral or anisotropic"}
     {seed.arg        1        "seed: turns the source rings, jitters the disc sizes"}
@@ -69,10 +67,7 @@ foreach {key value} [cmdline::getoptions argv {
     {every.arg       {}       "steps between progress lines (default a twentieth of the loading)"}
     {stressscale.arg 1.0      "factor on the confining stresses"}
     {movie.arg       1        "1: loading.mp4 with -out, when ffmpeg is installed"}
-}] { dict set options -$key $value }
-if {[llength $argv]} {
-    error "thesis-fracture.tcl takes only -option value pairs, not \"$argv\" (-help lists the options)"
-}
+}]
 dict with options {}
 if {${-mode} ni {fracture breakout}} { error "bad -mode \"${-mode}\": must be fracture or breakout" }
 if {${-stress} ni {neutral anisotropic}} {

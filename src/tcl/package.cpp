@@ -89,7 +89,8 @@ int initialise(Tcl_Interp* interp, bool safe) {
   registerPlotCommand(interp, session);
   if (!safe) registerGuiCommands(interp, session);  // no workbench in safe mode
   registerCheckpointCommands(interp, session);
-  if (Tcl_Eval(interp, kWarnProc) != TCL_OK) return TCL_ERROR;
+  if (Tcl_Eval(interp, kWarnProc) != TCL_OK || defineScriptOptions(interp) != TCL_OK)
+    return TCL_ERROR;
   return Tcl_PkgProvide(interp, "sandflow", SANDFLOW_VERSION);
 }
 

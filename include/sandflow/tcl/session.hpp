@@ -97,6 +97,9 @@ int startRecorder(Session& s, std::unique_ptr<Recorder> recorder);
 // The same, keeping the command that starts it (objv) for checkpoints.
 int startRecorder(Session& s, std::unique_ptr<Recorder> recorder, int objc, Tcl_Obj* const objv[]);
 
+// Defines ::sf::scriptOptions, the options of a script (script_options.cpp).
+int defineScriptOptions(Tcl_Interp* interp);
+
 // Safe mode: confines the session's files to the current folder; and throws
 // Error (SAFE PATH) for a path outside it, when confined.
 void confineToCurrentFolder(Session& s);
