@@ -32,6 +32,21 @@ bool covers(const dem::Bodies& b, int s) {
   return !b.ghost[s] && b.shape[s]->type() != dem::ShapeType::wall;
 }
 
+// Static buoyancy of slot s on the immersed area: the element's own area when
+// the lattice holds all of it, `submerged` cells' area when it sticks out.
+Vec2 buoyancyOf(const dem::Bodies& b, int s, double submerged, const lb::Lattice& lattice,
+                const Vec2& gravity) {
+  if (submerged == 0) return Vec2::Zero();
+  const lb::ResolvedLattice& p = lattice.params();
+  const Grid grid = gridOf(lattice);
+  const Vec2 lo = p.def.origin, hi = lo + Vec2(p.nx * p.h, p.ny * p.h);
+  const dem::Box box = b.shape[s]->bounds(b.x[s], b.angle[s]);
+  const bool within = (grid.periodicX || (box.lo.x() >= lo.x() && box.hi.x() <= hi.x())) &&
+                      (grid.periodicY || (box.lo.y() >= lo.y() && box.hi.y() <= hi.y()));
+  const double area = within ? b.shape[s]->area() : submerged * p.h * p.h;
+  return Vec2::Zero() - p.def.density * area * gravity;  // no -0 without gravity
+}
+
 }  // namespace
 
 bool Coupler::needed(const lb::Lattice& lattice, const dem::Assembly& assembly) {
@@ -468,7 +483,15 @@ void Coupler::solveVelocities(const lb::Lattice& lattice, const dem::Assembly& a
       other << b.force[s].x() - b.fluidForce[s].x(), b.force[s].y() - b.fluidForce[s].y(),
           b.torque[s] - b.fluidTorque[s];
     } else {
-      const Vec2 f = b.appliedForce[s] + b.mass[s] * (gravity + b.acceleration[s]) + b.buoyancy[s];
+      // A new element has no buoyancy yet (collect gives it after this
+      // step): without it the fluid would be pushed as if the element fell
+      // under its full weight, a kick of up to half the fluid's weight in
+      // its area on a nearly neutrally buoyant one.
+      double submerged = 0;  // summed as collect does: the same bits
+      for (const CellCover& piece : elements_[s].cells) submerged += piece.eps;
+      const Vec2 buoyancy =
+          settings.buoyancy ? buoyancyOf(b, s, submerged, lattice, gravity) : Vec2::Zero();
+      const Vec2 f = b.appliedForce[s] + b.mass[s] * (gravity + b.acceleration[s]) + buoyancy;
       other << f.x(), f.y(), b.appliedTorque[s];
     }
     const Vec3 M(b.mass[s], b.mass[s], b.inertia[s]);
@@ -549,20 +572,9 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
   }
   for (std::size_t k = 0; k < circles.size(); ++k)
     lattice.setCircleLoad(k, circleForce[k], circleTorque[k], circles_[k].cells.size());
-  // Static buoyancy on the immersed area: the element's own area when the
-  // lattice holds all of it, the covered cells' area when it sticks out.
-  const double rho = p.def.density, cellArea = p.h * p.h;
-  const Vec2 lo = p.def.origin, hi = lo + Vec2(p.nx * p.h, p.ny * p.h);
-  const Grid grid = gridOf(lattice);
-  for (int s = 0; s < b.size(); ++s) {
-    b.buoyancy[s] = Vec2::Zero();
-    if (!settings.buoyancy || submerged[s] == 0) continue;
-    const dem::Box box = b.shape[s]->bounds(b.x[s], b.angle[s]);
-    const bool within = (grid.periodicX || (box.lo.x() >= lo.x() && box.hi.x() <= hi.x())) &&
-                        (grid.periodicY || (box.lo.y() >= lo.y() && box.hi.y() <= hi.y()));
-    const double area = within ? b.shape[s]->area() : submerged[s] * cellArea;
-    b.buoyancy[s] = Vec2::Zero() - rho * area * gravity;  // no -0 without gravity
-  }
+  for (int s = 0; s < b.size(); ++s)
+    b.buoyancy[s] =
+        settings.buoyancy ? buoyancyOf(b, s, submerged[s], lattice, gravity) : Vec2::Zero();
   times_.forces += since(t0);
 }
 

@@ -20,7 +20,9 @@ double since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
+// The same key for (a, b) and (b, a).
 std::uint64_t pairKey(int a, int b) {
+  if (a > b) std::swap(a, b);
   return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
 }
 
@@ -73,6 +75,13 @@ int Assembly::add(ElementDef def) {
 void Assembly::remove(int id) {
   bodies_.swapRemove(slot(id));
   slotsMoved_ = true;
+  // Its contacts end here: an element given its id later starts afresh (the
+  // next pair search carries history over by ids).
+  ContactList& l = list_;
+  std::int32_t* touching = l.history[l.current].touching.data();
+  for (std::size_t k = 0; k < l.size(); ++k)
+    if (l.idA[k] == id || l.idB[k] == id) touching[k] = 0;
+  viewValid_ = false;
   std::erase_if(sources_, [&](const Source& x) { return x.id == id; });
   std::erase_if(bonds_, [&](const Bond& x) { return x.idA == id || x.idB == id; });
   touched();
@@ -279,7 +288,9 @@ void Assembly::updatePairs() {
   kept[0].clear(), kept[1].clear();
   // Contact history carries over by element ids. Each run of the old list is
   // in slot-pair order, so while no slot has moved a merge does it (one
-  // cursor per run); after a deletion, a map.
+  // cursor per run); after a deletion, a map. There the last slot moved into
+  // the deleted one, so a pair may come back with its ends swapped: its
+  // history is then turned round.
   const ContactList& old = list_;
   const ContactHistory& oldHistory = old.now();
   std::unordered_map<std::uint64_t, std::size_t> byIds;
@@ -296,9 +307,10 @@ void Assembly::updatePairs() {
                            bodies_.invMass[b] == 0 && bodies_.invInertia[b] == 0;
     if (immovable) continue;
     std::ptrdiff_t from = -1;
+    bool swapped = false;
     if (slotsMoved_) {
       if (auto it = byIds.find(pairKey(bodies_.id[a], bodies_.id[b])); it != byIds.end())
-        from = std::ptrdiff_t(it->second);
+        from = std::ptrdiff_t(it->second), swapped = old.idA[it->second] != bodies_.id[a];
     } else {
       for (int run = 0; run < 2; ++run) {
         std::size_t& k = cursor[run];
@@ -318,7 +330,7 @@ void Assembly::updatePairs() {
       if ((bodies_.x[a] - bodies_.x[b]).squaredNorm() > gap * gap * (1 + 1e-12)) continue;
     }
     const bool linear = !laws_[bodies_.material[a] * nm + bodies_.material[b]].hertz;
-    kept[discs && linear && vectorPass ? 0 : 1].push_back({a, b, discs, from});
+    kept[discs && linear && vectorPass ? 0 : 1].push_back({a, b, discs, swapped, from});
   }
   // The new list goes into the spare one; every column of every contact is
   // written (a reused list holds the contacts of an older build).
@@ -336,10 +348,13 @@ void Assembly::updatePairs() {
       prepareContact(next, k);
       h.touching[k] = e.old >= 0;
       if (e.old >= 0) {
+        // Normal (a to b), shear spring and force (on b): the other way
+        // round for a pair whose ends swapped.
         const std::size_t o = std::size_t(e.old);
-        h.nx[k] = oldHistory.nx[o], h.ny[k] = oldHistory.ny[o];
-        h.sx[k] = oldHistory.sx[o], h.sy[k] = oldHistory.sy[o];
-        next.fx[k] = old.fx[o], next.fy[k] = old.fy[o];
+        const double sign = e.swapped ? -1.0 : 1.0;
+        h.nx[k] = sign * oldHistory.nx[o], h.ny[k] = sign * oldHistory.ny[o];
+        h.sx[k] = sign * oldHistory.sx[o], h.sy[k] = sign * oldHistory.sy[o];
+        next.fx[k] = sign * old.fx[o], next.fy[k] = sign * old.fy[o];
         next.px[k] = old.px[o], next.py[k] = old.py[o], next.overlap[k] = old.overlap[o];
       } else {
         h.nx[k] = h.ny[k] = h.sx[k] = h.sy[k] = 0.0;

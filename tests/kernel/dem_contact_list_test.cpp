@@ -137,5 +137,77 @@ TEST(ContactList, HistoryCarriesOverWhenThePairsAreFoundAgain) {
   EXPECT_TRUE(sameBits(lazy.bodies().x, eager.bodies().x));
 }
 
+// A disc pressed against a held one and sliding along it, kept from rolling
+// (a shear spring builds), and optionally a far disc made first, in slot 0.
+struct Slider {
+  Assembly a;
+  int held = -1, slider = -1, far = -1;
+  explicit Slider(bool withFar) {
+    Material m{"grain"};
+    m.density = 1;
+    m.kn = m.ks = 1e3;
+    m.friction = 0.5;
+    a.materials().add(m);
+    auto disc = [&](const Vec2& x, const Vec2& v, std::uint8_t hold, const Vec2& force) {
+      ElementDef d;
+      d.shape = std::make_unique<Disc>(1.0);
+      d.material = 1, d.x = x, d.v = v, d.hold = hold, d.force = force;
+      return a.add(std::move(d));
+    };
+    if (withFar) far = disc(Vec2(20, 20), Vec2::Zero(), 0, Vec2::Zero());
+    held = disc(Vec2::Zero(), Vec2::Zero(), holdX | holdY | holdRotation, Vec2::Zero());
+    // Pressed in by its applied force; sliding, not rolling.
+    slider = disc(Vec2(1.9, 0), Vec2(0, 0.01), holdRotation, Vec2(-100, 0));
+  }
+  void run(int steps) {
+    for (int s = 0; s < steps; ++s) a.step(2e-3, Vec2::Zero());
+  }
+  Vec2 shear() const {  // on the slider
+    for (const Contact& c : a.contacts())
+      if (c.touching) return c.idB == slider ? c.shear : Vec2(-c.shear);
+    return Vec2::Zero();
+  }
+};
+
+TEST(ContactList, HistorySurvivesADeletionThatSwapsAPairsSlots) {
+  // Deleting the far disc moves the slider (the last slot) into slot 0, in
+  // front of the held disc: the pair comes back the other way round, and
+  // must keep its shear spring.
+  Slider kept(true), deleted(true);
+  kept.run(50), deleted.run(50);
+  const Vec2 shear = deleted.shear();
+  ASSERT_GT(shear.norm(), 0.2);  // a step adds 0.02
+  deleted.a.remove(deleted.far);
+  ASSERT_EQ(deleted.a.slot(deleted.slider), 0);
+  kept.run(1), deleted.run(1);
+  EXPECT_NEAR((deleted.shear() - kept.shear()).norm(), 0.0, 1e-12 * shear.norm());
+  kept.run(50), deleted.run(50);
+  const Bodies &k = kept.a.bodies(), &d = deleted.a.bodies();
+  const int sk = k.slot(kept.slider), sd = d.slot(deleted.slider);
+  EXPECT_NEAR((d.x[sd] - k.x[sk]).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((d.v[sd] - k.v[sk]).norm(), 0.0, 1e-12);
+}
+
+TEST(ContactList, ADeletedElementsContactsDoNotPassToItsIdsNextOwner) {
+  // The slider deleted and a disc at rest made in its place, which takes
+  // its id (the largest): a new contact, whose spring starts from zero as
+  // that of a disc put there in a scene that never had the slider.
+  Slider reused(false), fresh(false);
+  reused.run(50);
+  ASSERT_GT(reused.shear().norm(), 0.2);
+  const Vec2 x = reused.a.bodies().x[reused.a.slot(reused.slider)];
+  reused.a.remove(reused.slider);
+  fresh.a.remove(fresh.slider);
+  for (Slider* s : {&reused, &fresh}) {
+    ElementDef d;
+    d.shape = std::make_unique<Disc>(1.0);
+    d.material = 1, d.x = x;
+    EXPECT_EQ(s->a.add(std::move(d)), s->slider);
+  }
+  reused.run(1), fresh.run(1);
+  EXPECT_EQ(reused.shear(), fresh.shear());
+  EXPECT_LT(reused.shear().norm(), 0.1);
+}
+
 }  // namespace
 }  // namespace sf::dem

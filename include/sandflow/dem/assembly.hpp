@@ -186,6 +186,7 @@ class Assembly {
     struct Kept {
       int a, b;
       bool discs;
+      bool swapped;        // that pair had a and b the other way round
       std::ptrdiff_t old;  // the same pair in the old list, if it touched (else -1)
     };
     std::vector<Box> boxes;
