@@ -550,12 +550,14 @@ void Assembly::step(double dt, const Vec2& gravity) {
   Bodies& b = bodies_;
   const int n = b.size();
   bondsPending_ = false;
-  std::vector<Vec2> x0;  // verlet moves before it checks: the pose to go back to
-  std::vector<double> a0;
+  // Verlet moves before it checks: the pose and half-step velocities to go
+  // back to.
+  std::vector<Vec2> x0, v0;
+  std::vector<double> a0, w0;
   if (integrator == Integrator::verlet) {
     // Kick-drift with the forces of the previous step, then forces, then kick.
-    x0 = b.x;
-    a0 = b.angle;
+    x0 = b.x, v0 = b.vHalf;
+    a0 = b.angle, w0 = b.wHalf;
     if (anyUnstarted()) {
       // An element without a previous step (new, or set by hand) kicks with the
       // force at its present state: evaluate it, keeping the contact history
@@ -587,19 +589,8 @@ void Assembly::step(double dt, const Vec2& gravity) {
       b.angle[s] += dt * b.wHalf[s];
     }
     updatePairs();
-    times_.sort += since(t0);
-    t0 = Clock::now();
-    try {
-      computeForces(dt, gravity, true);
-    } catch (...) {
-      b.x = x0;
-      b.angle = a0;
-      throw;
-    }
   } else {
     updatePairs();
-    times_.sort += since(t0);
-    t0 = Clock::now();
     // Velocity-dependent forces (damping) use the last half-step velocity: the
     // extrapolated v(t) = v(t - dt/2) + a(t - dt) dt/2 feeds back the previous
     // acceleration and sustains limit cycles of the contact-rotation modes at
@@ -607,14 +598,19 @@ void Assembly::step(double dt, const Vec2& gravity) {
     if (anyUnstarted())
       for (int s = 0; s < n; ++s)
         if (!b.started[s]) b.vHalf[s] = b.v[s], b.wHalf[s] = b.w[s];
-    computeForces(dt, gravity, integrator == Integrator::central);
   }
-  times_.narrow += since(t0);
+  times_.sort += since(t0);
   t0 = Clock::now();
+  spareForce_.resize(std::size_t(n)), spareTorque_.resize(std::size_t(n));
+  b.force.swap(spareForce_), b.torque.swap(spareTorque_);
   try {
+    computeForces(dt, gravity, integrator != Integrator::euler);
+    times_.narrow += since(t0);
+    t0 = Clock::now();
     checkSpeeds(dt);
   } catch (...) {
-    if (integrator == Integrator::verlet) b.x = x0, b.angle = a0;
+    b.force.swap(spareForce_), b.torque.swap(spareTorque_);
+    if (integrator == Integrator::verlet) b.x = x0, b.angle = a0, b.vHalf = v0, b.wHalf = w0;
     throw;
   }
   // Nothing can fail now: the contacts' new history and the bonds' breaks of

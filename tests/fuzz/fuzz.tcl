@@ -538,7 +538,7 @@ for {set i 1} {$i <= ${-count}} {incr i} {
     set n [llength [elementIds]]
     if {$n > $counts(maxElements)} { set counts(maxElements) $n }
     # Keep a scene small enough to stay quick: start again past 150 elements.
-    if {$n > 150} { reset; set built 0; incr counts(resets); forgetSpots }
+    if {$n > 150} { puts $log {catch reset}; reset; set built 0; incr counts(resets); forgetSpots }
     if {!${-quiet} && $i % 1000 == 0} { puts "  $i command lines"; flush stdout }
 }
 close $log

@@ -221,6 +221,10 @@ class Assembly {
   std::uint64_t lawsAt_ = 0, lawsMaterials_ = 0;
   mutable double critical_ = 0;
   std::vector<char> scratchTouch_;  // per element: in contact this step (computeForces)
+  // The step computes its forces into these and swaps them in, so that a
+  // step that fails leaves the last step's forces (Verlet kicks with them).
+  std::vector<Vec2> spareForce_;
+  std::vector<double> spareTorque_;
   int nextBondId_ = 0;
   double time_ = 0;
 };
