@@ -82,14 +82,7 @@ foreach {from to} [list {0 0} [list 0 $H] [list $W 0] [list $W $H] {0 0} [list $
 }
 set y0 [expr {$H - ${-start} * $a}]
 set body [ellipse create -center [list [expr {0.5 * $W}] $y0] -axes [list [expr {0.5 * $a}] [expr {0.375 * $a}]] \
-              -sides ${-sides} -angle [expr {$pi / 4}] -material grain -fix {x y rot}]
-# Held for its first two steps: the first coupled step of a new element
-# charges it a spurious fluid force (about a third of the fluid's weight in
-# its area, a kick that rings for some ten steps; for an element this light
-# it would reach Mach 0.2 on a coarse lattice). Held, the fluid meets it at
-# rest, and once released it starts from rest.
-run 2
-element configure $body -fix {}
+              -sides ${-sides} -angle [expr {$pi / 4}] -material grain]
 
 set info [lattice info]
 set h [expr {$W / ${-cells}}]
