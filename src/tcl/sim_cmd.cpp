@@ -4,105 +4,169 @@
 #include <cstdio>
 
 #include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/session.hpp"
 
 namespace sf::tcl {
 namespace {
-
-enum Opt {
-  kTimestep,
-  kThreads,
-  kGravity,
-  kIntegrator,
-  kMaxOverlap,
-  kSolidRatio,
-  kSubsteps,
-  kBuoyancy,
-  kShare,
-  kInterior,
-  kCoupling,
-  kOptionCount
-};
-
-const OptionSpec kOptions[] = {
-    {"-timestep", "dt", "fix the timestep (a lattice's tau then follows from it)"},
-    {"-threads", "n", "threads for the step (results do not depend on it)"},
-    {"-gravity", "{gx gy}", "gravitational acceleration on the elements (default {0 0})"},
-    {"-integrator", "central|euler|verlet",
-     "element integrator: central difference (default), the thesis's first-order scheme, "
-     "velocity Verlet"},
-    {"-maxoverlap", "f",
-     "a contact overlapping more than f of the smaller element stops the run "
-     "(default 0.5)"},
-    {"-solidratio", "exact|1|2|4|8",
-     "solid ratio of covered cells: exact areas (default), or n x n subcell centres per cell "
-     "(1: the stair-step limit)"},
-    {"-substeps", "n",
-     "element steps per fluid step, each dt/n under the step's fluid force "
-     "(default 1)"},
-    {"-buoyancy", "0|1", "static buoyancy -rho_f A g on elements in the fluid (default 1)"},
-    {"-share", "coverage|equal",
-     "force of a cell covered by several solids: by coverage (default) or equal shares "
-     "(the thesis's)"},
-    {"-interior", "equilibrium|collide",
-     "cells deep inside solids: set to the equilibrium at the solid velocity (default), or "
-     "collided with the Noble-Torczynski operator like the rest"},
-    {"-coupling", "explicit|implicit",
-     "velocity the fluid sees: the element's at the start of the step (default, the thesis's), "
-     "or solved with the force it causes (stable for light elements)"},
-    {nullptr, nullptr, nullptr}};
 
 const char* const kSolidRatioNames[] = {"exact", "1", "2", "4", "8", nullptr};
 const int kSolidRatioSubcells[] = {coupling::kExact, 1, 2, 4, 8};
 const char* const kInteriorNames[] = {"equilibrium", "collide", nullptr};
 const char* const kCouplingNames[] = {"explicit", "implicit", nullptr};
 
+// What sim configure sets, staged: every value converted and checked before
+// any reaches the Manager.
+struct SimStage {
+  double timestep = 0;
+  int threads = 1, integrator = 0, substeps = 1;
+  Vec2 gravity = Vec2::Zero();
+  double maxOverlap = 0.5;
+  coupling::Settings coupled;
 
-Tcl_Obj* optionValue(const sim::Manager& m, int k) {
-  switch (k) {
-    case kTimestep:
-      return newDouble(m.timestep());
-    case kThreads:
-      return Tcl_NewIntObj(m.threads());
-    case kGravity:
-      return newVec2(m.gravity());
-    case kIntegrator:
-      return Tcl_NewStringObj(dem::integratorNames[int(m.assembly().integrator)], -1);
-    case kMaxOverlap:
-      return newDouble(m.assembly().maxOverlap);
-    case kSolidRatio:
-      for (int i = 0; kSolidRatioNames[i]; ++i)
-        if (kSolidRatioSubcells[i] == m.coupling().subcells)
-          return Tcl_NewStringObj(kSolidRatioNames[i], -1);
-      return Tcl_NewStringObj("exact", -1);
-    case kSubsteps:
-      return Tcl_NewIntObj(m.substeps());
-    case kBuoyancy:
-      return Tcl_NewBooleanObj(m.coupling().buoyancy);
-    case kShare:
-      return Tcl_NewStringObj(coupling::shareNames[int(m.coupling().share)], -1);
-    case kInterior:
-      return Tcl_NewStringObj(kInteriorNames[m.coupling().equilibriumInterior ? 0 : 1], -1);
-    default:
-      return Tcl_NewStringObj(kCouplingNames[m.coupling().implicit ? 1 : 0], -1);
+  static SimStage of(const sim::Manager& m) {
+    return {m.timestep(), m.threads(), int(m.assembly().integrator),
+            m.substeps(), m.gravity(), m.assembly().maxOverlap,
+            m.coupling()};
   }
+};
+
+OptionValue real(double v) {
+  return {.real = v};
+}
+OptionValue integer(int v) {
+  return {.integer = v};
+}
+OptionValue boolean(bool v) {
+  return {.boolean = v};
+}
+OptionValue vec(const Vec2& v) {
+  return {.vec = v};
+}
+OptionValue choice(int v) {
+  return {.choice = v};
+}
+
+int solidRatioChoice(int subcells) {
+  for (int i = 0; kSolidRatioNames[i]; ++i)
+    if (kSolidRatioSubcells[i] == subcells) return i;
+  return 0;
+}
+
+using Row = Option<SimStage>;
+const OptionTable<SimStage> kOptions{
+    Row{{"-timestep",
+         "dt",
+         "fix the timestep (a lattice's tau then follows from it)",
+         ValueKind::real,
+         "time",
+         {.min = 0, .minOpen = true}},
+        [](const SimStage& s) { return real(s.timestep); },
+        [](SimStage& s, const OptionValue& v) { s.timestep = v.real; }},
+    Row{{"-threads",
+         "n",
+         "threads for the step (results do not depend on it)",
+         ValueKind::integer,
+         "",
+         {.min = 1, .max = sim::Manager::kMaxThreads}},
+        [](const SimStage& s) { return integer(s.threads); },
+        [](SimStage& s, const OptionValue& v) { s.threads = v.integer; }},
+    Row{{"-gravity", "{gx gy}", "gravitational acceleration on the elements", ValueKind::vec2,
+         "length/time^2"},
+        [](const SimStage& s) { return vec(s.gravity); },
+        [](SimStage& s, const OptionValue& v) { s.gravity = v.vec; }},
+    Row{{"-integrator",
+         "central|euler|verlet",
+         "element integrator: central difference, the thesis's first-order scheme, velocity "
+         "Verlet",
+         ValueKind::choice,
+         "",
+         {},
+         dem::integratorNames},
+        [](const SimStage& s) { return choice(s.integrator); },
+        [](SimStage& s, const OptionValue& v) { s.integrator = v.choice; }},
+    Row{{"-maxoverlap",
+         "f",
+         "a contact overlapping more than f of the smaller element stops the run",
+         ValueKind::real,
+         "",
+         {.min = 0, .max = 2, .minOpen = true}},
+        [](const SimStage& s) { return real(s.maxOverlap); },
+        [](SimStage& s, const OptionValue& v) { s.maxOverlap = v.real; }},
+    Row{{"-solidratio",
+         "exact|1|2|4|8",
+         "solid ratio of covered cells: exact areas, or n x n subcell centres per cell (1: the "
+         "stair-step limit)",
+         ValueKind::choice,
+         "",
+         {},
+         kSolidRatioNames,
+         "solid ratio"},
+        [](const SimStage& s) { return choice(solidRatioChoice(s.coupled.subcells)); },
+        [](SimStage& s, const OptionValue& v) {
+          s.coupled.subcells = kSolidRatioSubcells[v.choice];
+        }},
+    Row{{"-substeps",
+         "n",
+         "element steps per fluid step, each dt/n under the step's fluid force",
+         ValueKind::integer,
+         "",
+         {.min = 1, .max = 1000}},
+        [](const SimStage& s) { return integer(s.substeps); },
+        [](SimStage& s, const OptionValue& v) { s.substeps = v.integer; }},
+    Row{{"-buoyancy", "0|1", "static buoyancy -rho_f A g on elements in the fluid",
+         ValueKind::boolean},
+        [](const SimStage& s) { return boolean(s.coupled.buoyancy); },
+        [](SimStage& s, const OptionValue& v) { s.coupled.buoyancy = v.boolean; }},
+    Row{{"-share",
+         "coverage|equal",
+         "force of a cell covered by several solids: by coverage or equal shares (the thesis's)",
+         ValueKind::choice,
+         "",
+         {},
+         coupling::shareNames},
+        [](const SimStage& s) { return choice(int(s.coupled.share)); },
+        [](SimStage& s, const OptionValue& v) { s.coupled.share = coupling::Share(v.choice); }},
+    Row{{"-interior",
+         "equilibrium|collide",
+         "cells deep inside solids: set to the equilibrium at the solid velocity, or collided "
+         "with the Noble-Torczynski operator like the rest",
+         ValueKind::choice,
+         "",
+         {},
+         kInteriorNames},
+        [](const SimStage& s) { return choice(s.coupled.equilibriumInterior ? 0 : 1); },
+        [](SimStage& s, const OptionValue& v) { s.coupled.equilibriumInterior = v.choice == 0; }},
+    Row{{"-coupling",
+         "explicit|implicit",
+         "velocity the fluid sees: the element's at the start of the step (the thesis's), or "
+         "solved with the force it causes (stable for light elements)",
+         ValueKind::choice,
+         "",
+         {},
+         kCouplingNames},
+        [](const SimStage& s) { return choice(s.coupled.implicit ? 1 : 0); },
+        [](SimStage& s, const OptionValue& v) { s.coupled.implicit = v.choice == 1; }},
+};
+enum { kTimestep = 0, kThreads, kGravity, kIntegrator, kMaxOverlap, kSolidRatio, kSubsteps };
+
+// The settings of a new session, for help's and `sim options`' defaults.
+const SimStage& defaults() {
+  static const SimStage d = SimStage::of(sim::Manager{});
+  return d;
 }
 
 int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   sim::Manager& m = sessionOf(data).manager;
+  SimStage stage = SimStage::of(m);
   if (objc == 1) {
-    Tcl_Obj* all = Tcl_NewListObj(0, nullptr);
-    for (int k = 0; k < kOptionCount; ++k) {
-      Tcl_ListObjAppendElement(nullptr, all, Tcl_NewStringObj(kOptions[k].name, -1));
-      Tcl_ListObjAppendElement(nullptr, all, optionValue(m, k));
-    }
-    Tcl_SetObjResult(interp, all);
+    Tcl_SetObjResult(interp, kOptions.all(stage));
     return TCL_OK;
   }
   if (objc == 2) {
-    const int k = optionIndex(interp, objv[1], kOptions);
+    const int k = optionIndex(interp, objv[1], kOptions.specs());
     if (k < 0) return TCL_ERROR;
-    Tcl_SetObjResult(interp, optionValue(m, k));
+    Tcl_SetObjResult(interp, kOptions.get(stage, k));
     return TCL_OK;
   }
   if (objc % 2 == 0) {
@@ -110,93 +174,25 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
     return TCL_ERROR;
   }
   // Stage every value, validate, then commit: a refused option changes nothing.
-  std::optional<double> timestep, maxOverlap;
-  std::optional<int> threads, integrator, substeps;
-  std::optional<Vec2> gravity;
-  coupling::Settings coupled = m.coupling();
-  if (!parseOptions(interp, objc, objv, 1, kOptions, [&](int k, Tcl_Obj* v) {
-        int choice = 0;
-        switch (k) {
-          case kSolidRatio:
-            if (!getChoice(interp, v, "solid ratio", kSolidRatioNames, choice)) return false;
-            coupled.subcells = kSolidRatioSubcells[choice];
-            return true;
-          case kSubsteps: {
-            int n = 0;
-            if (!getInt(interp, v, "-substeps", n)) return false;
-            if (n < 1 || n > 1000)
-              return reject(interp, "VALUE SUBSTEPS",
-                            "-substeps must be 1 to 1000, got " + std::to_string(n));
-            substeps = n;
-            return true;
-          }
-          case kBuoyancy:
-            return getBool(interp, v, "-buoyancy", coupled.buoyancy);
-          case kShare:
-            if (!getChoice(interp, v, "share", coupling::shareNames, choice)) return false;
-            coupled.share = static_cast<coupling::Share>(choice);
-            return true;
-          case kInterior:
-            if (!getChoice(interp, v, "interior", kInteriorNames, choice)) return false;
-            coupled.equilibriumInterior = choice == 0;
-            return true;
-          case kCoupling:
-            if (!getChoice(interp, v, "coupling", kCouplingNames, choice)) return false;
-            coupled.implicit = choice == 1;
-            return true;
-          default:
-            break;
-        }
-        if (k == kGravity) {
-          Vec2 g;
-          if (!getVec2(interp, v, "-gravity", g)) return false;
-          gravity = g;
-        } else if (k == kIntegrator) {
-          int i = 0;
-          if (!getChoice(interp, v, "integrator", dem::integratorNames, i)) return false;
-          integrator = i;
-        } else if (k == kMaxOverlap) {
-          double f = 0;
-          if (!getDouble(interp, v, "-maxoverlap", f)) return false;
-          if (!(f > 0 && f <= 2))
-            return reject(interp, "VALUE MAXOVERLAP",
-                          "-maxoverlap must be > 0 and <= 2, got " + formatNumber(f));
-          maxOverlap = f;
-        } else if (k == kTimestep) {
-          double dt = 0;
-          if (!getDouble(interp, v, "-timestep", dt)) return false;
-          if (!(dt > 0))
-            return reject(interp, "VALUE TIMESTEP",
-                          "-timestep must be > 0, got " + formatNumber(dt));
-          timestep = dt;
-        } else {
-          int n = 0;
-          if (!getInt(interp, v, "-threads", n)) return false;
-          if (n < 1 || n > sim::Manager::kMaxThreads)
-            return reject(interp, "VALUE THREADS",
-                          "-threads must be 1 to " + std::to_string(sim::Manager::kMaxThreads) +
-                              ", got " + std::to_string(n));
-          threads = n;
-        }
-        return true;
-      }))
-    return TCL_ERROR;
+  std::vector<bool> given;
+  if (!kOptions.apply(interp, objc, objv, 1, stage, &given)) return TCL_ERROR;
   return guarded(interp, [&] {
     // The only step that can refuse, before anything changes.
-    if (timestep || substeps) {
+    if (given[kTimestep] || given[kSubsteps]) {
       try {
-        m.setStepping(timestep, substeps);
+        m.setStepping(given[kTimestep] ? std::optional<double>(stage.timestep) : std::nullopt,
+                      given[kSubsteps] ? std::optional<int>(stage.substeps) : std::nullopt);
       } catch (const Error& e) {
         fail(interp, e);
-        noteOptionOnce(interp, substeps && !timestep ? "-substeps" : "-timestep");
+        noteOptionOnce(interp, given[kSubsteps] && !given[kTimestep] ? "-substeps" : "-timestep");
         return TCL_ERROR;
       }
     }
-    m.setCoupling(coupled);
-    if (threads) m.setThreads(*threads);
-    if (gravity) m.setGravity(*gravity);
-    if (integrator) m.assembly().integrator = static_cast<dem::Integrator>(*integrator);
-    if (maxOverlap) m.assembly().maxOverlap = *maxOverlap;
+    m.setCoupling(stage.coupled);
+    if (given[kThreads]) m.setThreads(stage.threads);
+    if (given[kGravity]) m.setGravity(stage.gravity);
+    m.assembly().integrator = static_cast<dem::Integrator>(stage.integrator);
+    m.assembly().maxOverlap = stage.maxOverlap;
     return TCL_OK;
   });
 }
@@ -206,9 +202,20 @@ int SimCget(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
     Tcl_WrongNumArgs(interp, 1, objv, "-option");
     return TCL_ERROR;
   }
-  const int k = optionIndex(interp, objv[1], kOptions);
+  const int k = optionIndex(interp, objv[1], kOptions.specs());
   if (k < 0) return TCL_ERROR;
-  Tcl_SetObjResult(interp, optionValue(sessionOf(data).manager, k));
+  Tcl_SetObjResult(interp, kOptions.get(SimStage::of(sessionOf(data).manager), k));
+  return TCL_OK;
+}
+
+// The option table itself, one dict per option (the workbench's property
+// panel builds its fields from it).
+int SimOptions(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
+    return TCL_ERROR;
+  }
+  Tcl_SetObjResult(interp, kOptions.describe(defaults()));
   return TCL_OK;
 }
 
@@ -288,13 +295,17 @@ int SimHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     return TCL_ERROR;
   }
   Tcl_SetObjResult(
-      interp, newString(helpText("sim",
-                                 {"configure ?-option value ...?", "cget -option",
-                                  "info    -> dict time step timestep tau mach elements contacts "
-                                  "bonds broken nodes mlups stable covered fluidforce ...",
-                                  "hash    -> the state's CRC-32, 8 hex digits",
-                                  "check   -> the invariants that fail (empty: all hold)", "help"},
-                                 kOptions)));
+      interp, newString(kOptions.help("sim",
+                                      {"configure ?-option value ...?", "cget -option",
+                                       "info    -> dict time step timestep tau mach elements "
+                                       "contacts bonds broken nodes mlups stable covered "
+                                       "fluidforce ...",
+                                       "hash    -> the state's CRC-32, 8 hex digits",
+                                       "check   -> the invariants that fail (empty: all hold)",
+                                       "options -> the options as dicts: name type unit min max "
+                                       "choices default help ...",
+                                       "help"},
+                                      defaults())));
   return TCL_OK;
 }
 
@@ -307,6 +318,7 @@ void registerSimCommands(Tcl_Interp* interp, Session* session) {
                 {"info", SimInfo},
                 {"hash", SimHash},
                 {"check", SimCheck},
+                {"options", SimOptions},
                 {"help", SimHelp}},
                session);
 }

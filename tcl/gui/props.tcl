@@ -98,13 +98,30 @@ proc ::sf::gui::props::show {} {
         array unset shown
         array unset errors
         set r 0
+        set table [table]
         foreach opt $names {
             set key [string range $opt 1 end]
             ttk::label $rows.l$key -text $opt
-            ttk::entry $rows.e$key -textvariable ::sf::gui::props::values($opt) -width 16
+            # The option table, where the noun has one, picks the field.
+            set row [expr {[dict exists $table $opt] ? [dict get $table $opt] : {}}]
+            set type [expr {$row ne {} ? [dict get $row type] : "text"}]
+            if {$type eq "choice"} {
+                ttk::combobox $rows.e$key -textvariable ::sf::gui::props::values($opt) -width 14 \
+                    -values [dict get $row choices] -state readonly
+                ::bind $rows.e$key <<ComboboxSelected>> [list ::sf::gui::props::apply $opt]
+            } elseif {$type eq "boolean"} {
+                ttk::checkbutton $rows.e$key -variable ::sf::gui::props::values($opt) \
+                    -onvalue 1 -offvalue 0 -command [list ::sf::gui::props::apply $opt]
+            } else {
+                ttk::entry $rows.e$key -textvariable ::sf::gui::props::values($opt) -width 16
+            }
+            if {$row ne {}} {
+                ::sf::gui::tip $rows.l$key [describe $row]
+                ::sf::gui::tip $rows.e$key [describe $row]
+            }
             ttk::label $rows.x$key -foreground #c92a2a -wraplength 240 -justify left
             # Each option takes two rows: the field, and its refusal beneath.
-            grid $rows.l$key -row [expr {2 * $r}] -column 0 -sticky ew -pady 1
+            grid $rows.l$key -row [expr {2 * $r}] -column 0 -sticky ew -pady 1 -padx {0 6}
             grid $rows.e$key -row [expr {2 * $r}] -column 1 -sticky ew -pady 1
             grid $rows.x$key -row [expr {2 * $r + 1}] -column 0 -columnspan 2 -sticky w
             grid remove $rows.x$key
@@ -157,6 +174,32 @@ proc ::sf::gui::props::summary {} {
         }
         default { return "" }
     }
+}
+
+# The target's option table by name ({} for a noun without one): `NOUN options`.
+proc ::sf::gui::props::table {} {
+    set table {}
+    if {![catch {uplevel #0 [list [lindex [prefix] 0] options]} rows]} {
+        foreach row $rows { dict set table [dict get $row name] $row }
+    }
+    return $table
+}
+
+# A row's tooltip: its help, unit, range and default.
+proc ::sf::gui::props::describe {row} {
+    set text [dict get $row help]
+    if {[dict get $row unit] ne {}} { append text "\nunit: [dict get $row unit]" }
+    set lo [dict get $row min]
+    set hi [dict get $row max]
+    if {$lo ne {} || $hi ne {}} {
+        set range {}
+        if {$lo ne {}} { lappend range "[expr {[dict get $row minopen] ? ">" : ">="}] $lo" }
+        if {$hi ne {}} { lappend range "[expr {[dict get $row maxopen] ? "<" : "<="}] $hi" }
+        append text "\nrange: [join $range { and }]"
+    }
+    if {[dict get $row choices] ne {}} { append text "\none of: [join [dict get $row choices] {, }]" }
+    append text "\ndefault: [dict get $row default]"
+    return $text
 }
 
 # Applies one edited field: the configure command, through ::sf::gui::do.

@@ -1,0 +1,136 @@
+#pragma once
+// Option tables: each option of a configurable noun is one row -- name, value
+// kind, unit, range, choices, help, and how it reads and writes the noun's
+// staged settings. configure, cget, help, `NOUN options` (which the
+// workbench's property panel and the documentation read) all come from the
+// rows, so an option's range is written once.
+#include <functional>
+#include <initializer_list>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "sandflow/tcl/args.hpp"
+
+namespace sf::tcl {
+
+enum class ValueKind { real, integer, boolean, vec2, choice };
+
+// An interval; an end at infinity is not checked, an open end excludes itself.
+struct Range {
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool minOpen = false, maxOpen = false;
+};
+
+// A value as converted from Tcl, in the member its kind uses.
+struct OptionValue {
+  double real = 0;
+  int integer = 0;
+  bool boolean = false;
+  Vec2 vec = Vec2::Zero();
+  int choice = 0;
+};
+
+// What a row says about its option, whatever it configures.
+struct OptionInfo {
+  const char* name;      // "-timestep"
+  const char* synopsis;  // the value's form in help: "dt"
+  const char* help;      // one line, without the default (help adds it)
+  ValueKind kind = ValueKind::real;
+  const char* unit = "";  // in the user's consistent units, e.g. "time"
+  Range range{};
+  const char* const* choices = nullptr;  // ValueKind::choice: null-terminated
+  const char* what = nullptr;            // a choice's noun in "bad WHAT": default the name
+};
+
+// Converts and checks a value for the option: false with the Tcl error set
+// (Tcl's own message for a malformed value; "-name must be > 0, got -1" with
+// errorCode SANDFLOW VALUE NAME for one out of range).
+bool convertOption(Tcl_Interp* interp, Tcl_Obj* obj, const OptionInfo& info, OptionValue& out);
+Tcl_Obj* optionObj(const OptionInfo& info, const OptionValue& value);
+// The row as a dict: name synopsis help type unit min max minopen maxopen
+// choices default (empty where it does not apply).
+Tcl_Obj* describeOption(const OptionInfo& info, const OptionValue& defaultValue);
+
+template <class Stage>
+struct Option {
+  OptionInfo info;
+  std::function<OptionValue(const Stage&)> get;
+  std::function<void(Stage&, const OptionValue&)> set;
+};
+
+// The rows of one noun. Keep it static: Tcl caches the name table by address.
+template <class Stage>
+class OptionTable {
+ public:
+  explicit OptionTable(std::initializer_list<Option<Stage>> rows) : rows_(rows) {
+    for (const Option<Stage>& r : rows_)
+      specs_.push_back({r.info.name, r.info.synopsis, r.info.help});
+    specs_.push_back({nullptr, nullptr, nullptr});
+  }
+  int size() const { return int(rows_.size()); }
+  const OptionInfo& info(int k) const { return rows_[std::size_t(k)].info; }
+  // The plain rows, for parseOptions, optionIndex and helpText.
+  const OptionSpec* specs() const { return specs_.data(); }
+
+  // Reads "-option value" pairs from objv[first..) onto the stage; `given`
+  // marks the options that came. False with the Tcl error set (and errorInfo
+  // naming the option) on the first bad one; the stage is then half written.
+  bool apply(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first, Stage& stage,
+             std::vector<bool>* given = nullptr) const {
+    if (given) given->assign(rows_.size(), false);
+    return parseOptions(interp, objc, objv, first, specs(), [&](int k, Tcl_Obj* v) {
+      OptionValue value;
+      if (!convertOption(interp, v, info(k), value)) return false;
+      rows_[std::size_t(k)].set(stage, value);
+      if (given) (*given)[std::size_t(k)] = true;
+      return true;
+    });
+  }
+  Tcl_Obj* get(const Stage& stage, int k) const {
+    return optionObj(info(k), rows_[std::size_t(k)].get(stage));
+  }
+  // configure with no option: -name value ...
+  Tcl_Obj* all(const Stage& stage) const {
+    Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
+    for (int k = 0; k < size(); ++k) {
+      Tcl_ListObjAppendElement(nullptr, list, Tcl_NewStringObj(info(k).name, -1));
+      Tcl_ListObjAppendElement(nullptr, list, get(stage, k));
+    }
+    return list;
+  }
+  // `NOUN options`: one dict per row, the defaults read from `defaults`.
+  Tcl_Obj* describe(const Stage& defaults) const {
+    Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
+    for (int k = 0; k < size(); ++k)
+      Tcl_ListObjAppendElement(nullptr, list,
+                               describeOption(info(k), rows_[std::size_t(k)].get(defaults)));
+    return list;
+  }
+  // help's option lines, each with its default.
+  std::string help(const char* noun, std::initializer_list<const char*> verbs,
+                   const Stage& defaults) const {
+    std::vector<std::string> texts;
+    std::vector<OptionSpec> withDefaults;
+    texts.reserve(rows_.size());
+    for (int k = 0; k < size(); ++k) {
+      Tcl_Obj* value = get(defaults, k);
+      Tcl_IncrRefCount(value);
+      const std::string shown = Tcl_GetString(value);
+      Tcl_DecrRefCount(value);
+      texts.push_back(std::string(info(k).help) + " (default " + (shown.empty() ? "none" : shown) +
+                      ")");
+    }
+    for (int k = 0; k < size(); ++k)
+      withDefaults.push_back({info(k).name, info(k).synopsis, texts[std::size_t(k)].c_str()});
+    withDefaults.push_back({nullptr, nullptr, nullptr});
+    return helpText(noun, verbs, withDefaults.data());
+  }
+
+ private:
+  std::vector<Option<Stage>> rows_;
+  std::vector<OptionSpec> specs_;
+};
+
+}  // namespace sf::tcl

@@ -1,0 +1,97 @@
+// The parts of option tables that do not depend on what they configure.
+#include "sandflow/tcl/option_table.hpp"
+
+#include <cctype>
+#include <cmath>
+
+namespace sf::tcl {
+namespace {
+
+// "VALUE SUBSTEPS" from "-substeps".
+std::string errorCodeOf(const char* name) {
+  std::string code = "VALUE ";
+  for (const char* c = name + 1; *c; ++c)
+    code += char(std::toupper(static_cast<unsigned char>(*c)));
+  return code;
+}
+
+// The range in words: "1 to 1000", "> 0", "> 0 and <= 2", ">= 0".
+std::string rangeText(const Range& r, bool integer) {
+  const bool lo = std::isfinite(r.min), hi = std::isfinite(r.max);
+  if (integer && lo && hi && !r.minOpen && !r.maxOpen)
+    return formatNumber(r.min) + " to " + formatNumber(r.max);
+  std::string text;
+  if (lo) text = (r.minOpen ? "> " : ">= ") + formatNumber(r.min);
+  if (hi) text += std::string(lo ? " and " : "") + (r.maxOpen ? "< " : "<= ") + formatNumber(r.max);
+  return text;
+}
+
+bool inRange(const Range& r, double v) {
+  return (r.minOpen ? v > r.min : v >= r.min) && (r.maxOpen ? v < r.max : v <= r.max);
+}
+
+}  // namespace
+
+bool convertOption(Tcl_Interp* interp, Tcl_Obj* obj, const OptionInfo& info, OptionValue& out) {
+  double checked = 0;
+  switch (info.kind) {
+    case ValueKind::real:
+      if (!getDouble(interp, obj, info.name, out.real)) return false;
+      checked = out.real;
+      break;
+    case ValueKind::integer:
+      if (!getInt(interp, obj, info.name, out.integer)) return false;
+      checked = out.integer;
+      break;
+    case ValueKind::boolean:
+      return getBool(interp, obj, info.name, out.boolean);
+    case ValueKind::vec2:
+      return getVec2(interp, obj, info.name, out.vec);
+    case ValueKind::choice:
+      return getChoice(interp, obj, info.what ? info.what : info.name + 1, info.choices,
+                       out.choice);
+  }
+  if (inRange(info.range, checked)) return true;
+  return reject(interp, errorCodeOf(info.name),
+                std::string(info.name) + " must be " +
+                    rangeText(info.range, info.kind == ValueKind::integer) + ", got " +
+                    Tcl_GetString(obj));
+}
+
+Tcl_Obj* optionObj(const OptionInfo& info, const OptionValue& value) {
+  switch (info.kind) {
+    case ValueKind::real:
+      return std::isnan(value.real) ? Tcl_NewObj() : newDouble(value.real);
+    case ValueKind::integer:
+      return Tcl_NewIntObj(value.integer);
+    case ValueKind::boolean:
+      return Tcl_NewBooleanObj(value.boolean);
+    case ValueKind::vec2:
+      return newVec2(value.vec);
+    case ValueKind::choice:
+      return Tcl_NewStringObj(info.choices[value.choice], -1);
+  }
+  return Tcl_NewObj();
+}
+
+Tcl_Obj* describeOption(const OptionInfo& info, const OptionValue& defaultValue) {
+  static const char* const kinds[] = {"real", "integer", "boolean", "vec2", "choice"};
+  const Range& r = info.range;
+  const bool numeric = info.kind == ValueKind::real || info.kind == ValueKind::integer;
+  Tcl_Obj* choices = Tcl_NewListObj(0, nullptr);
+  for (const char* const* c = info.choices; c && *c; ++c)
+    Tcl_ListObjAppendElement(nullptr, choices, Tcl_NewStringObj(*c, -1));
+  return newDict({{"name", Tcl_NewStringObj(info.name, -1)},
+                  {"synopsis", Tcl_NewStringObj(info.synopsis, -1)},
+                  {"help", Tcl_NewStringObj(info.help, -1)},
+                  {"type", Tcl_NewStringObj(kinds[int(info.kind)], -1)},
+                  {"unit", Tcl_NewStringObj(info.unit, -1)},
+                  {"min", numeric && std::isfinite(r.min) ? newDouble(r.min) : Tcl_NewObj()},
+                  {"max", numeric && std::isfinite(r.max) ? newDouble(r.max) : Tcl_NewObj()},
+                  {"minopen", Tcl_NewBooleanObj(r.minOpen)},
+                  {"maxopen", Tcl_NewBooleanObj(r.maxOpen)},
+                  {"choices", choices},
+                  {"default", optionObj(info, defaultValue)}});
+}
+
+}  // namespace sf::tcl
