@@ -212,6 +212,8 @@ proc forgetSpots {} {
     set ::occupied [dict create]
     foreach id [elementIds] {
         lassign [dict get [element info $id] position] x y
+        # (only the grid's spots: an element may lie anywhere, x = 1e300 too)
+        if {abs($x) > 2 || abs($y) > 2} continue
         dict set ::occupied [expr {round($x * 10) - 1}],[expr {round($y * 10) - 1}] 1
     }
 }
