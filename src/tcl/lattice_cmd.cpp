@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/session.hpp"
 
 namespace sf::tcl {
@@ -11,47 +12,10 @@ namespace {
 using lb::LatticeDef;
 using lb::SideKind;
 
-enum Opt {
-  kOrigin,
-  kSize,
-  kCells,
-  kSpacing,
-  kViscosity,
-  kDensity,
-  kTau,
-  kPeriodic,
-  kWalls,
-  kForcing,
-  kCollision,
-  kForceScheme,
-  kMagic,
-  kOptionCount
-};
-
-// Options are converted in this order, so -periodic is applied before -walls.
-const OptionSpec kOptions[] = {
-    {"-origin", "{x0 y0}", "lower-left corner (default {0 0})"},
-    {"-size", "{Lx Ly}", "width and height, whole numbers of spacings"},
-    {"-cells", "NX", "cells across x (or give -spacing)"},
-    {"-spacing", "h", "node spacing (or give -cells)"},
-    {"-viscosity", "nu", "kinematic viscosity; with tau it sets the timestep"},
-    {"-density", "rho0", "initial and reference density (default 1)"},
-    {"-tau", "tau", "relaxation time > 0.5 (default 1, or from sim -timestep)"},
-    {"-periodic", "{x y}", "periodic axes: two booleans, or axis names (default {1 0})"},
-    {"-walls", "{side kind ...}",
-     "sides left right bottom top: noslip ?{vx vy}?, slip, periodic, velocity {vx vy}, "
-     "pressure p"},
-    {"-forcing", "{Fx Fy}", "body force per unit area (rho a) (default {0 0})"},
-    {"-collision", "bgk|trt", "collision operator (default bgk)"},
-    {"-forcescheme", "nodal|guo", "body-force scheme (default nodal, the thesis's)"},
-    {"-magic", "Lambda", "TRT magic parameter (default 0.1875: walls exactly halfway)"},
-    {nullptr, nullptr, nullptr}};
-
 const char* const kCollisionNames[] = {"bgk", "trt", nullptr};
 const char* const kForceSchemeNames[] = {"nodal", "guo", nullptr};
 const char* const kSideNames[] = {"left", "right", "bottom", "top", nullptr};
 const char* const kKindNames[] = {"periodic", "noslip", "slip", "velocity", "pressure", nullptr};
-
 
 bool parseWallSpec(Tcl_Interp* interp, Tcl_Obj* spec, lb::SideDef& side) {
   int n = 0;
@@ -117,89 +81,6 @@ bool parsePeriodic(Tcl_Interp* interp, Tcl_Obj* value, LatticeDef& def) {
   return true;
 }
 
-// Converts the options in objv[first..] into `def`; `given` records which appeared.
-bool applyOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first, LatticeDef& def,
-                  std::array<bool, kOptionCount>& given) {
-  std::array<Tcl_Obj*, kOptionCount> value{};
-  if (!parseOptions(interp, objc, objv, first, kOptions, [&](int index, Tcl_Obj* v) {
-        value[index] = v;
-        return true;
-      }))
-    return false;
-  for (int k = 0; k < kOptionCount; ++k) {
-    given[k] = value[k] != nullptr;
-    if (!value[k]) continue;
-    Tcl_Obj* v = value[k];
-    const char* name = kOptions[k].name;
-    double d = 0;
-    int index = 0;
-    bool ok = true;
-    switch (k) {
-      case kOrigin:
-        ok = getVec2(interp, v, name, def.origin);
-        break;
-      case kSize:
-        ok = getVec2(interp, v, name, def.size);
-        break;
-      case kCells:
-        ok = getInt(interp, v, name, def.cells);
-        if (ok && def.cells < 1)
-          ok = reject(interp, "VALUE CELLS",
-                      "-cells must be >= 1, got " + std::to_string(def.cells));
-        def.spacing = 0;
-        break;
-      case kSpacing:
-        ok = getDouble(interp, v, name, def.spacing);
-        if (ok && !(def.spacing > 0))
-          ok = reject(interp, "VALUE SPACING",
-                      "-spacing must be > 0, got " + formatNumber(def.spacing));
-        def.cells = 0;
-        break;
-      case kViscosity:
-        ok = getDouble(interp, v, name, d);
-        if (ok && !(d > 0))
-          ok = reject(interp, "VALUE VISCOSITY", "-viscosity must be > 0, got " + formatNumber(d));
-        def.viscosity = d;
-        break;
-      case kDensity:
-        ok = getDouble(interp, v, name, def.density);
-        break;
-      case kTau:
-        ok = getDouble(interp, v, name, d);
-        if (ok && !(d > 0.5))
-          ok = reject(interp, "VALUE TAU",
-                      "tau " + formatNumber(d) + " is unstable: must exceed 0.5");
-        def.tau = d;
-        break;
-      case kPeriodic:
-        ok = parsePeriodic(interp, v, def);
-        break;
-      case kWalls:
-        ok = parseWalls(interp, v, def);
-        break;
-      case kForcing:
-        ok = getVec2(interp, v, name, def.forcing);
-        break;
-      case kCollision:
-        ok = getChoice(interp, v, "collision", kCollisionNames, index);
-        def.collision = static_cast<lb::Collision>(index);
-        break;
-      case kForceScheme:
-        ok = getChoice(interp, v, "force scheme", kForceSchemeNames, index);
-        def.forceScheme = static_cast<lb::ForceScheme>(index);
-        break;
-      case kMagic:
-        ok = getDouble(interp, v, name, def.magic);
-        break;
-    }
-    if (!ok) {
-      noteOptionOnce(interp, name);
-      return false;
-    }
-  }
-  return true;
-}
-
 Tcl_Obj* wallsValue(const LatticeDef& def) {
   Tcl_Obj* d = Tcl_NewDictObj();
   for (int s = 0; s < 4; ++s) {
@@ -216,39 +97,165 @@ Tcl_Obj* wallsValue(const LatticeDef& def) {
   return d;
 }
 
-Tcl_Obj* optionValue(const lb::ResolvedLattice& p, int k) {
-  const LatticeDef& def = p.def;
-  switch (k) {
-    case kOrigin:
-      return newVec2(def.origin);
-    case kSize:
-      return newVec2(def.size);
-    case kCells:
-      return Tcl_NewIntObj(p.nx);
-    case kSpacing:
-      return newDouble(p.h);
-    case kViscosity:
-      return newDouble(p.viscosity);
-    case kDensity:
-      return newDouble(def.density);
-    case kTau:
-      return newDouble(p.tau);
-    case kPeriodic: {
-      Tcl_Obj* flags[2] = {Tcl_NewBooleanObj(def.sides[lb::left].kind == SideKind::periodic),
-                           Tcl_NewBooleanObj(def.sides[lb::bottom].kind == SideKind::periodic)};
-      return Tcl_NewListObj(2, flags);
-    }
-    case kWalls:
-      return wallsValue(def);
-    case kForcing:
-      return newVec2(def.forcing);
-    case kCollision:
-      return Tcl_NewStringObj(kCollisionNames[int(def.collision)], -1);
-    case kForceScheme:
-      return Tcl_NewStringObj(kForceSchemeNames[int(def.forceScheme)], -1);
-    default:
-      return newDouble(def.magic);
+// What lattice create and configure set, staged; with the resolved values
+// that cget reports.
+struct LatticeStage {
+  LatticeDef def;
+  int nx = 0;
+  double h = 0, viscosity = 0, tau = 0;
+
+  static LatticeStage of(const lb::ResolvedLattice& p) {
+    LatticeStage s{p.def, p.nx, p.h, p.viscosity, p.tau};
+    s.def.viscosity = p.viscosity, s.def.tau = p.tau, s.def.timestep = p.dt;
+    s.def.cells = p.nx, s.def.spacing = 0;
+    return s;
   }
+};
+
+OptionValue real(double v) {
+  return {.real = v};
+}
+OptionValue integer(int v) {
+  return {.integer = v};
+}
+OptionValue vec(const Vec2& v) {
+  return {.vec = v};
+}
+OptionValue choice(int v) {
+  return {.choice = v};
+}
+
+using Row = Option<LatticeStage>;
+// In this order: -periodic is applied before -walls.
+const OptionTable<LatticeStage> kOptions{
+    {Row{{"-origin", "{x0 y0}", "lower-left corner", ValueKind::vec2, "length"},
+         [](const LatticeStage& s) { return vec(s.def.origin); },
+         [](LatticeStage& s, const OptionValue& v) { s.def.origin = v.vec; }},
+     Row{{"-size",
+          "{Lx Ly}",
+          "width and height, whole numbers of spacings",
+          ValueKind::vec2,
+          "length",
+          {},
+          nullptr,
+          nullptr,
+          nullptr,
+          ""},
+         [](const LatticeStage& s) { return vec(s.def.size); },
+         [](LatticeStage& s, const OptionValue& v) { s.def.size = v.vec; }},
+     Row{{"-cells",
+          "NX",
+          "cells across x (or give -spacing)",
+          ValueKind::integer,
+          "",
+          {.min = 1},
+          nullptr,
+          nullptr,
+          nullptr,
+          ""},
+         [](const LatticeStage& s) { return integer(s.nx); },
+         [](LatticeStage& s, const OptionValue& v) { s.def.cells = v.integer, s.def.spacing = 0; }},
+     Row{{"-spacing",
+          "h",
+          "node spacing (or give -cells)",
+          ValueKind::real,
+          "length",
+          {.min = 0, .minOpen = true},
+          nullptr,
+          nullptr,
+          nullptr,
+          ""},
+         [](const LatticeStage& s) { return real(s.h); },
+         [](LatticeStage& s, const OptionValue& v) { s.def.spacing = v.real, s.def.cells = 0; }},
+     Row{{"-viscosity",
+          "nu",
+          "kinematic viscosity; with tau it sets the timestep",
+          ValueKind::real,
+          "length^2/time",
+          {.min = 0, .minOpen = true},
+          nullptr,
+          nullptr,
+          nullptr,
+          ""},
+         [](const LatticeStage& s) { return real(s.viscosity); },
+         [](LatticeStage& s, const OptionValue& v) { s.def.viscosity = v.real; }},
+     Row{{"-density", "rho0", "initial and reference density", ValueKind::real, "mass/length^2"},
+         [](const LatticeStage& s) { return real(s.def.density); },
+         [](LatticeStage& s, const OptionValue& v) { s.def.density = v.real; }},
+     Row{{"-tau",
+          "tau",
+          "relaxation time (a fixed sim -timestep sets it instead)",
+          ValueKind::real,
+          "",
+          {.min = 0.5, .minOpen = true},
+          nullptr,
+          nullptr,
+          [](double tau) { return "tau " + formatNumber(tau) + " is unstable: must exceed 0.5"; },
+          "1"},
+         [](const LatticeStage& s) { return real(s.tau); },
+         [](LatticeStage& s, const OptionValue& v) { s.def.tau = v.real; }},
+     Row{{"-periodic", "{x y}", "periodic axes: two booleans, or axis names", ValueKind::custom},
+         nullptr,
+         nullptr,
+         [](Tcl_Interp* interp, Tcl_Obj* v, LatticeStage& s) {
+           return parsePeriodic(interp, v, s.def);
+         },
+         [](const LatticeStage& s) {
+           Tcl_Obj* flags[2] = {
+               Tcl_NewBooleanObj(s.def.sides[lb::left].kind == SideKind::periodic),
+               Tcl_NewBooleanObj(s.def.sides[lb::bottom].kind == SideKind::periodic)};
+           return Tcl_NewListObj(2, flags);
+         }},
+     Row{{"-walls", "{side kind ...}",
+          "sides left right bottom top: noslip ?{vx vy}?, slip, periodic, velocity {vx vy}, "
+          "pressure p",
+          ValueKind::custom},
+         nullptr,
+         nullptr,
+         [](Tcl_Interp* interp, Tcl_Obj* v, LatticeStage& s) {
+           return parseWalls(interp, v, s.def);
+         },
+         [](const LatticeStage& s) { return wallsValue(s.def); }},
+     Row{{"-forcing", "{Fx Fy}", "body force per unit area (rho a)", ValueKind::vec2,
+          "mass/(length time^2)"},
+         [](const LatticeStage& s) { return vec(s.def.forcing); },
+         [](LatticeStage& s, const OptionValue& v) { s.def.forcing = v.vec; }},
+     Row{{"-collision",
+          "bgk|trt",
+          "collision operator",
+          ValueKind::choice,
+          "",
+          {},
+          kCollisionNames,
+          "collision"},
+         [](const LatticeStage& s) { return choice(int(s.def.collision)); },
+         [](LatticeStage& s, const OptionValue& v) { s.def.collision = lb::Collision(v.choice); }},
+     Row{{"-forcescheme",
+          "nodal|guo",
+          "body-force scheme (nodal: the thesis's)",
+          ValueKind::choice,
+          "",
+          {},
+          kForceSchemeNames,
+          "force scheme"},
+         [](const LatticeStage& s) { return choice(int(s.def.forceScheme)); },
+         [](LatticeStage& s, const OptionValue& v) {
+           s.def.forceScheme = lb::ForceScheme(v.choice);
+         }},
+     Row{{"-magic", "Lambda", "TRT magic parameter (0.1875: walls exactly halfway)"},
+         [](const LatticeStage& s) { return real(s.def.magic); },
+         [](LatticeStage& s, const OptionValue& v) { s.def.magic = v.real; }}},
+    true};
+enum { kSize = 1, kCells, kSpacing, kViscosity, kDensity, kTau };
+
+// A new lattice's settings, for help's and `lattice options`' defaults.
+const LatticeStage& defaults() {
+  static const LatticeStage d = [] {
+    LatticeStage s;
+    s.tau = 1;
+    return s;
+  }();
+  return d;
 }
 
 int LatticeCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
@@ -257,9 +264,10 @@ int LatticeCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
     Tcl_WrongNumArgs(interp, 1, objv, "-size {Lx Ly} (-cells NX | -spacing h) ?-option value ...?");
     return TCL_ERROR;
   }
-  LatticeDef def;
-  std::array<bool, kOptionCount> given{};
-  if (!applyOptions(interp, objc, objv, 1, def, given)) return TCL_ERROR;
+  LatticeStage stage;
+  std::vector<bool> given;
+  if (!kOptions.apply(interp, objc, objv, 1, stage, &given)) return TCL_ERROR;
+  const LatticeDef& def = stage.def;
   if (!given[kSize]) return fail(interp, "VALUE SIZE", "lattice create needs -size {Lx Ly}");
   if (given[kCells] == given[kSpacing])
     return fail(interp, "VALUE CELLS", "lattice create needs exactly one of -cells and -spacing");
@@ -272,34 +280,24 @@ int LatticeCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
 int LatticeConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   Session& s = sessionOf(data);
   return guarded(interp, [&] {
-    const lb::ResolvedLattice& p = s.manager.lattice().params();
+    LatticeStage stage = LatticeStage::of(s.manager.lattice().params());
     if (objc == 1) {
-      Tcl_Obj* all = Tcl_NewListObj(0, nullptr);
-      for (int k = 0; k < kOptionCount; ++k) {
-        Tcl_ListObjAppendElement(nullptr, all, Tcl_NewStringObj(kOptions[k].name, -1));
-        Tcl_ListObjAppendElement(nullptr, all, optionValue(p, k));
-      }
-      Tcl_SetObjResult(interp, all);
+      Tcl_SetObjResult(interp, kOptions.all(stage));
       return TCL_OK;
     }
     if (objc == 2) {  // like Tk: "configure -option" reports that option
-      const int k = optionIndex(interp, objv[1], kOptions);
+      const int k = optionIndex(interp, objv[1], kOptions.specs());
       if (k < 0) return TCL_ERROR;
-      Tcl_SetObjResult(interp, optionValue(p, k));
+      Tcl_SetObjResult(interp, kOptions.get(stage, k));
       return TCL_OK;
     }
     if (objc % 2 == 0) {
       Tcl_WrongNumArgs(interp, 1, objv, "?-option value ...?");
       return TCL_ERROR;
     }
-    LatticeDef def = p.def;
-    def.viscosity = p.viscosity;
-    def.tau = p.tau;
-    def.timestep = p.dt;
-    def.cells = p.nx;
-    def.spacing = 0;
-    std::array<bool, kOptionCount> given{};
-    if (!applyOptions(interp, objc, objv, 1, def, given)) return TCL_ERROR;
+    std::vector<bool> given;
+    if (!kOptions.apply(interp, objc, objv, 1, stage, &given)) return TCL_ERROR;
+    LatticeDef& def = stage.def;
     // Keep the timestep unless tau is what changed.
     if (given[kViscosity] && !given[kTau]) def.tau.reset();
     if (given[kTau]) def.timestep.reset();
@@ -315,10 +313,10 @@ int LatticeCget(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
     return TCL_ERROR;
   }
   return guarded(interp, [&] {
-    const lb::ResolvedLattice& p = s.manager.lattice().params();
-    const int k = optionIndex(interp, objv[1], kOptions);
+    const LatticeStage stage = LatticeStage::of(s.manager.lattice().params());
+    const int k = optionIndex(interp, objv[1], kOptions.specs());
     if (k < 0) return TCL_ERROR;
-    Tcl_SetObjResult(interp, optionValue(p, k));
+    Tcl_SetObjResult(interp, kOptions.get(stage, k));
     return TCL_OK;
   });
 }
@@ -353,8 +351,8 @@ int LatticeInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
                  {"origin", newVec2(p.def.origin)},
                  {"size", newVec2(p.def.size)},
                  {"forcing", newVec2(p.def.forcing)},
-                 {"collision", optionValue(p, kCollision)},
-                 {"forcescheme", optionValue(p, kForceScheme)},
+                 {"collision", Tcl_NewStringObj(kCollisionNames[int(p.def.collision)], -1)},
+                 {"forcescheme", Tcl_NewStringObj(kForceSchemeNames[int(p.def.forceScheme)], -1)},
                  {"magic", newDouble(p.def.magic)},
                  {"walls", wallsValue(p.def)},
                  {"kinds", kinds},
@@ -551,24 +549,37 @@ int LatticeObstacles(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
   });
 }
 
+// The option table, one dict per option (the workbench's property panel).
+int LatticeOptions(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
+    return TCL_ERROR;
+  }
+  Tcl_SetObjResult(interp, kOptions.describe(defaults()));
+  return TCL_OK;
+}
+
 int LatticeHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
     Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
-  Tcl_SetObjResult(
-      interp,
-      newString(helpText("lattice",
-                         {"create -size {Lx Ly} (-cells NX | -spacing h) ?-option value ...?",
-                          "configure ?-option value ...?", "cget -option",
-                          "info                    -> dict nx ny nodes spacing timestep tau ...",
-                          "probe {x y}             -> dict density pressure velocity solid ...",
-                          "obstacle rect {x0 y0 x1 y1} ?-slip 0|1? ?-id N?   -> id",
-                          "obstacle circle {cx cy r} ?-outside 0|1? ?-velocity {vx vy w}? "
-                          "?-id N?   -> id",
-                          "obstacle delete ID", "obstacle info ID    -> dict ... force torque",
-                          "obstacles               -> ids", "delete", "help"},
-                         kOptions)));
+  Tcl_SetObjResult(interp,
+                   newString(kOptions.help(
+                       "lattice",
+                       {"create -size {Lx Ly} (-cells NX | -spacing h) ?-option value ...?",
+                        "configure ?-option value ...?", "cget -option",
+                        "info                    -> dict nx ny nodes spacing timestep tau ...",
+                        "probe {x y}             -> dict density pressure velocity solid ...",
+                        "obstacle rect {x0 y0 x1 y1} ?-slip 0|1? ?-id N?   -> id",
+                        "obstacle circle {cx cy r} ?-outside 0|1? ?-velocity {vx vy w}? "
+                        "?-id N?   -> id",
+                        "obstacle delete ID", "obstacle info ID    -> dict ... force torque",
+                        "obstacles               -> ids", "delete",
+                        "options                 -> the options as dicts: name type unit "
+                        "min max choices default help ...",
+                        "help"},
+                       defaults())));
   return TCL_OK;
 }
 
@@ -584,6 +595,7 @@ void registerLatticeCommands(Tcl_Interp* interp, Session* session) {
                 {"obstacle", nullptr},
                 {"obstacles", LatticeObstacles},
                 {"delete", LatticeDelete},
+                {"options", LatticeOptions},
                 {"help", LatticeHelp}},
                session);
   makeEnsemble(interp, "::sf::lattice::obstacle",

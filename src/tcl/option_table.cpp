@@ -50,8 +50,11 @@ bool convertOption(Tcl_Interp* interp, Tcl_Obj* obj, const OptionInfo& info, Opt
     case ValueKind::choice:
       return getChoice(interp, obj, info.what ? info.what : info.name + 1, info.choices,
                        out.choice);
+    case ValueKind::custom:
+      return true;  // the row converts it
   }
   if (inRange(info.range, checked)) return true;
+  if (info.outOfRange) return reject(interp, errorCodeOf(info.name), info.outOfRange(checked));
   return reject(interp, errorCodeOf(info.name),
                 std::string(info.name) + " must be " +
                     rangeText(info.range, info.kind == ValueKind::integer) + ", got " +
@@ -70,28 +73,31 @@ Tcl_Obj* optionObj(const OptionInfo& info, const OptionValue& value) {
       return newVec2(value.vec);
     case ValueKind::choice:
       return Tcl_NewStringObj(info.choices[value.choice], -1);
+    case ValueKind::custom:
+      break;
   }
   return Tcl_NewObj();
 }
 
-Tcl_Obj* describeOption(const OptionInfo& info, const OptionValue& defaultValue) {
-  static const char* const kinds[] = {"real", "integer", "boolean", "vec2", "choice"};
+Tcl_Obj* describeOption(const OptionInfo& info, Tcl_Obj* defaultValue) {
+  static const char* const kinds[] = {"real", "integer", "boolean", "vec2", "choice", "custom"};
   const Range& r = info.range;
   const bool numeric = info.kind == ValueKind::real || info.kind == ValueKind::integer;
   Tcl_Obj* choices = Tcl_NewListObj(0, nullptr);
   for (const char* const* c = info.choices; c && *c; ++c)
     Tcl_ListObjAppendElement(nullptr, choices, Tcl_NewStringObj(*c, -1));
-  return newDict({{"name", Tcl_NewStringObj(info.name, -1)},
-                  {"synopsis", Tcl_NewStringObj(info.synopsis, -1)},
-                  {"help", Tcl_NewStringObj(info.help, -1)},
-                  {"type", Tcl_NewStringObj(kinds[int(info.kind)], -1)},
-                  {"unit", Tcl_NewStringObj(info.unit, -1)},
-                  {"min", numeric && std::isfinite(r.min) ? newDouble(r.min) : Tcl_NewObj()},
-                  {"max", numeric && std::isfinite(r.max) ? newDouble(r.max) : Tcl_NewObj()},
-                  {"minopen", Tcl_NewBooleanObj(r.minOpen)},
-                  {"maxopen", Tcl_NewBooleanObj(r.maxOpen)},
-                  {"choices", choices},
-                  {"default", optionObj(info, defaultValue)}});
+  return newDict(
+      {{"name", Tcl_NewStringObj(info.name, -1)},
+       {"synopsis", Tcl_NewStringObj(info.synopsis, -1)},
+       {"help", Tcl_NewStringObj(info.help, -1)},
+       {"type", Tcl_NewStringObj(kinds[int(info.kind)], -1)},
+       {"unit", Tcl_NewStringObj(info.unit, -1)},
+       {"min", numeric && std::isfinite(r.min) ? newDouble(r.min) : Tcl_NewObj()},
+       {"max", numeric && std::isfinite(r.max) ? newDouble(r.max) : Tcl_NewObj()},
+       {"minopen", Tcl_NewBooleanObj(r.minOpen)},
+       {"maxopen", Tcl_NewBooleanObj(r.maxOpen)},
+       {"choices", choices},
+       {"default", info.defaultText ? Tcl_NewStringObj(info.defaultText, -1) : defaultValue}});
 }
 
 }  // namespace sf::tcl

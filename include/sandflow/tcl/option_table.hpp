@@ -14,7 +14,8 @@
 
 namespace sf::tcl {
 
-enum class ValueKind { real, integer, boolean, vec2, choice };
+// `custom`: the row converts and shows the value itself (a dict of walls, say).
+enum class ValueKind { real, integer, boolean, vec2, choice, custom };
 
 // An interval; an end at infinity is not checked, an open end excludes itself.
 struct Range {
@@ -42,6 +43,10 @@ struct OptionInfo {
   Range range{};
   const char* const* choices = nullptr;  // ValueKind::choice: null-terminated
   const char* what = nullptr;            // a choice's noun in "bad WHAT": default the name
+  // The refusal of a value out of range, where it has its own words
+  // ("tau 0.49 is unstable: must exceed 0.5"); default "-name must be ...".
+  std::string (*outOfRange)(double value) = nullptr;
+  const char* defaultText = nullptr;  // shown instead of the default read ("" : none)
 };
 
 // Converts and checks a value for the option: false with the Tcl error set
@@ -51,20 +56,27 @@ bool convertOption(Tcl_Interp* interp, Tcl_Obj* obj, const OptionInfo& info, Opt
 Tcl_Obj* optionObj(const OptionInfo& info, const OptionValue& value);
 // The row as a dict: name synopsis help type unit min max minopen maxopen
 // choices default (empty where it does not apply).
-Tcl_Obj* describeOption(const OptionInfo& info, const OptionValue& defaultValue);
+Tcl_Obj* describeOption(const OptionInfo& info, Tcl_Obj* defaultValue);
 
 template <class Stage>
 struct Option {
   OptionInfo info;
   std::function<OptionValue(const Stage&)> get;
   std::function<void(Stage&, const OptionValue&)> set;
+  // ValueKind::custom instead: convert onto the stage (false with the error
+  // set), and show.
+  std::function<bool(Tcl_Interp*, Tcl_Obj*, Stage&)> parse = nullptr;
+  std::function<Tcl_Obj*(const Stage&)> show = nullptr;
 };
 
 // The rows of one noun. Keep it static: Tcl caches the name table by address.
 template <class Stage>
 class OptionTable {
  public:
-  explicit OptionTable(std::initializer_list<Option<Stage>> rows) : rows_(rows) {
+  // inTableOrder: apply converts the options in the rows' order, not the
+  // command's (a lattice's -periodic before its -walls).
+  explicit OptionTable(std::initializer_list<Option<Stage>> rows, bool inTableOrder = false)
+      : rows_(rows), inTableOrder_(inTableOrder) {
     for (const Option<Stage>& r : rows_)
       specs_.push_back({r.info.name, r.info.synopsis, r.info.help});
     specs_.push_back({nullptr, nullptr, nullptr});
@@ -80,16 +92,32 @@ class OptionTable {
   bool apply(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first, Stage& stage,
              std::vector<bool>* given = nullptr) const {
     if (given) given->assign(rows_.size(), false);
-    return parseOptions(interp, objc, objv, first, specs(), [&](int k, Tcl_Obj* v) {
+    std::vector<Tcl_Obj*> values(rows_.size(), nullptr);
+    auto convert = [&](int k, Tcl_Obj* v) {
+      const Option<Stage>& row = rows_[std::size_t(k)];
+      if (given) (*given)[std::size_t(k)] = true;
+      if (info(k).kind == ValueKind::custom) return row.parse(interp, v, stage);
       OptionValue value;
       if (!convertOption(interp, v, info(k), value)) return false;
-      rows_[std::size_t(k)].set(stage, value);
-      if (given) (*given)[std::size_t(k)] = true;
+      row.set(stage, value);
       return true;
-    });
+    };
+    if (!parseOptions(interp, objc, objv, first, specs(), [&](int k, Tcl_Obj* v) {
+          if (!inTableOrder_) return convert(k, v);
+          values[std::size_t(k)] = v;  // the last of a repeated option wins
+          return true;
+        }))
+      return false;
+    for (int k = 0; k < size(); ++k)
+      if (values[std::size_t(k)] && !convert(k, values[std::size_t(k)])) {
+        noteOptionOnce(interp, info(k).name);
+        return false;
+      }
+    return true;
   }
   Tcl_Obj* get(const Stage& stage, int k) const {
-    return optionObj(info(k), rows_[std::size_t(k)].get(stage));
+    const Option<Stage>& row = rows_[std::size_t(k)];
+    return info(k).kind == ValueKind::custom ? row.show(stage) : optionObj(info(k), row.get(stage));
   }
   // configure with no option: -name value ...
   Tcl_Obj* all(const Stage& stage) const {
@@ -104,8 +132,7 @@ class OptionTable {
   Tcl_Obj* describe(const Stage& defaults) const {
     Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
     for (int k = 0; k < size(); ++k)
-      Tcl_ListObjAppendElement(nullptr, list,
-                               describeOption(info(k), rows_[std::size_t(k)].get(defaults)));
+      Tcl_ListObjAppendElement(nullptr, list, describeOption(info(k), get(defaults, k)));
     return list;
   }
   // help's option lines, each with its default.
@@ -117,7 +144,7 @@ class OptionTable {
     for (int k = 0; k < size(); ++k) {
       Tcl_Obj* value = get(defaults, k);
       Tcl_IncrRefCount(value);
-      const std::string shown = Tcl_GetString(value);
+      const std::string shown = info(k).defaultText ? info(k).defaultText : Tcl_GetString(value);
       Tcl_DecrRefCount(value);
       texts.push_back(std::string(info(k).help) + " (default " + (shown.empty() ? "none" : shown) +
                       ")");
@@ -131,6 +158,7 @@ class OptionTable {
  private:
   std::vector<Option<Stage>> rows_;
   std::vector<OptionSpec> specs_;
+  bool inTableOrder_;
 };
 
 }  // namespace sf::tcl
