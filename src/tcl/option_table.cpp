@@ -33,6 +33,14 @@ bool inRange(const Range& r, double v) {
 }  // namespace
 
 bool convertOption(Tcl_Interp* interp, Tcl_Obj* obj, const OptionInfo& info, OptionValue& out) {
+  if (info.orEmpty) {
+    int length = 0;
+    Tcl_GetStringFromObj(obj, &length);
+    if (length == 0) {
+      out.empty = true;
+      return true;
+    }
+  }
   double checked = 0;
   switch (info.kind) {
     case ValueKind::real:
@@ -62,6 +70,7 @@ bool convertOption(Tcl_Interp* interp, Tcl_Obj* obj, const OptionInfo& info, Opt
 }
 
 Tcl_Obj* optionObj(const OptionInfo& info, const OptionValue& value) {
+  if (value.empty) return Tcl_NewObj();
   switch (info.kind) {
     case ValueKind::real:
       return std::isnan(value.real) ? Tcl_NewObj() : newDouble(value.real);

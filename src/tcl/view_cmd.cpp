@@ -19,6 +19,16 @@ std::string offscreenShown() {
   return loaded.empty() ? offscreenChoice() : loaded;
 }
 
+// The view's option table, one dict per option (the property panel).
+int ViewOptionsTable(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
+    return TCL_ERROR;
+  }
+  Tcl_SetObjResult(interp, viewOptionTable());
+  return TCL_OK;
+}
+
 int ViewConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   Session& s = sessionOf(data);
   if (objc == 1) {
@@ -82,7 +92,8 @@ int ViewHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   std::string text =
       helpText("view",
                {"configure ?-option value ...?", "cget -option",
-                "pixel {x y} ?-option value ...?   -> {column row} in a picture", "help"},
+                "pixel {x y} ?-option value ...?   -> {column row} in a picture",
+                "options -> the options as dicts: name type choices default help ...", "help"},
                nullptr);
   text += "\noptions (also of snapshot and output movie):\n" + viewOptionHelp(true);
   text.pop_back();
@@ -137,10 +148,13 @@ int Snapshot(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
 }  // namespace
 
 void registerViewCommands(Tcl_Interp* interp, Session* session) {
-  makeEnsemble(
-      interp, "::sf::view",
-      {{"configure", ViewConfigure}, {"cget", ViewCget}, {"pixel", ViewPixel}, {"help", ViewHelp}},
-      session);
+  makeEnsemble(interp, "::sf::view",
+               {{"configure", ViewConfigure},
+                {"cget", ViewCget},
+                {"pixel", ViewPixel},
+                {"options", ViewOptionsTable},
+                {"help", ViewHelp}},
+               session);
   Tcl_CreateObjCommand(interp, "::sf::snapshot", Snapshot, session, nullptr);
 }
 

@@ -31,6 +31,7 @@ struct OptionValue {
   bool boolean = false;
   Vec2 vec = Vec2::Zero();
   int choice = 0;
+  bool empty = false;  // {} given where the row allows it (OptionInfo::orEmpty)
 };
 
 // What a row says about its option, whatever it configures.
@@ -47,6 +48,7 @@ struct OptionInfo {
   // ("tau 0.49 is unstable: must exceed 0.5"); default "-name must be ...".
   std::string (*outOfRange)(double value) = nullptr;
   const char* defaultText = nullptr;  // shown instead of the default read ("" : none)
+  bool orEmpty = false;               // {} is a value too: "automatic" (a view's -field)
 };
 
 // Converts and checks a value for the option: false with the Tcl error set

@@ -24,6 +24,8 @@ Tcl_Obj* viewOptionValue(Tcl_Interp* interp, Tcl_Obj* name, const render::ViewOp
                          const std::string& offscreen);
 // The synopsis lines of the view options, for help texts.
 std::string viewOptionHelp(bool withOffscreen);
+// `view options`: the option table, one dict per option.
+Tcl_Obj* viewOptionTable();
 
 // The back end a process uses: "auto" (OSMesa, else EGL), "osmesa" or "egl".
 // It can change only until the first picture loads a module.
