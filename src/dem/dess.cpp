@@ -1,6 +1,7 @@
 #include "sandflow/dem/dess.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace sf::dem {
@@ -65,8 +66,13 @@ void Dess::findPairs(const std::vector<Box>& boxes, std::vector<std::pair<int, i
   for (const Box& b : boxes) highest = std::max(highest, b.hi[other]);
   if (!(stripWidth > 0) || (highest - lowest) / stripWidth > n) stripWidth = (highest - lowest) / n;
   if (!(stripWidth > 0)) stripWidth = 1;
-  const int strips = int((highest - lowest) / stripWidth) + 1;
-  auto strip = [&](double v) { return std::min(strips - 1, int((v - lowest) / stripWidth)); };
+  // Boxes spread beyond what a double spans (one at 1e308, one at -1e308)
+  // share one strip: correct, and no index overflows.
+  const bool one = !std::isfinite((highest - lowest) / stripWidth);
+  const int strips = one ? 1 : int((highest - lowest) / stripWidth) + 1;
+  auto strip = [&](double v) {
+    return one ? 0 : std::min(strips - 1, int((v - lowest) / stripWidth));
+  };
   members_.resize(strips);
   for (std::vector<int>& m : members_) m.clear();  // keeps each strip's capacity
   for (int k = 0; k < n; ++k) {

@@ -4,6 +4,7 @@
 // which option a bad value came from.
 #include <tcl.h>
 
+#include <exception>
 #include <functional>
 #include <initializer_list>
 #include <string>
@@ -85,6 +86,9 @@ int guarded(Tcl_Interp* interp, Body&& body) {
     return fail(interp, e);
   } catch (const std::bad_alloc&) {
     return fail(interp, "RESOURCE MEMORY", "out of memory");
+  } catch (const std::exception& e) {
+    // A fault of sandflow's, not of the input: a Tcl error still, never a crash.
+    return fail(interp, "INTERNAL", std::string("internal error (please report): ") + e.what());
   }
 }
 
