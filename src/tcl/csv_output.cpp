@@ -1,10 +1,5 @@
-// output csv FILE -elements IDS ?-every K?: an element time series, and the
-// CSV writing that it shares with "record".
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstdlib>
-#include <cstring>
+// output csv FILE -elements IDS ?-every K?: an element time series; and the
+// CSV recorder it shares with "record" (the file itself is io::CsvWriter's).
 #include <set>
 #include <string>
 #include <vector>
@@ -12,108 +7,23 @@
 #include "csv_recorder.hpp"
 #include "output_verbs.hpp"
 #include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/session.hpp"
 
 namespace sf::tcl {
 
-CsvRecorder::CsvRecorder(std::string path, int every, std::vector<std::string> columns)
-    : Recorder(std::move(path), every), columns_(std::move(columns)) {}
-
-CsvRecorder::~CsvRecorder() {
-  if (file_) std::fclose(file_);
-}
-
-void CsvRecorder::writeOrThrow(const std::string& text) {
-  // One row at a time, flushed: a row is in the file, whole, once record() returns.
-  if (std::fwrite(text.data(), 1, text.size(), file_) != text.size() || std::fflush(file_) != 0)
-    throw Error("IO WRITE", std::string("writing failed: ") + std::strerror(errno));
-}
+CsvRecorder::CsvRecorder(std::string path, int every, const std::vector<std::string>& columns)
+    : Recorder(path, every), writer_(std::move(path), columns) {}
 
 void CsvRecorder::record(const Session& s) {
   // The values first: a record that cannot be taken writes nothing.
   scratch_.clear();
   values(s, scratch_);
-  std::string row = std::to_string(s.manager.stepCount()) + "," + formatNumber(s.manager.time());
-  for (double v : scratch_) {
-    row += ',';  // (appending pieces: "," + s trips a false -Wrestrict of GCC 12)
-    row += formatNumber(v);
-  }
-  row += "\n";
-  const bool first = !file_;
-  if (first && s.resumeStep >= 0 && resume(s.resumeStep)) {
-    writeOrThrow(row);
-    ++written_;
-    return;
-  }
-  if (first) {
-    file_ = std::fopen(path().c_str(), "we");  // close-on-exec: not for ffmpeg or gnuplot
-    if (!file_)
-      throw Error("IO OPEN", std::string("cannot open it for writing: ") + std::strerror(errno));
-    std::string header = "step,time";
-    for (const std::string& c : columns_) {
-      header += ',';
-      header += c;
-    }
-    row = header + "\n" + row;
-  }
-  try {
-    writeOrThrow(row);
-  } catch (const Error&) {
-    if (first) {  // no half-made file
-      std::fclose(file_);
-      file_ = nullptr;
-      std::remove(path().c_str());
-    }
-    throw;
-  }
+  // Only the first write resumes: later ones append to the file it opened.
+  writer_.write(s.manager.stepCount(), s.manager.time(), scratch_, s.resumeStep);
   ++written_;
 }
 
-bool CsvRecorder::resume(long long step) {
-  std::FILE* f = std::fopen(path().c_str(), "r+e");
-  if (!f) return false;  // nothing to continue: a fresh file
-  std::string text;
-  char buffer[65536];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, f)) > 0;) text.append(buffer, n);
-  std::string header = "step,time";
-  for (const std::string& c : columns_) {
-    header += ',';
-    header += c;
-  }
-  header += '\n';
-  if (std::ferror(f) || text.compare(0, header.size(), header) != 0) {
-    std::fclose(f);  // another series, or unreadable: start afresh
-    return false;
-  }
-  // Keep the rows before `step` (a run that went on past the checkpoint wrote
-  // the rest); the row for `step` itself comes next.
-  std::size_t keep = header.size();
-  while (keep < text.size()) {
-    const std::size_t end = text.find('\n', keep);
-    if (end == std::string::npos || std::atoll(text.c_str() + keep) >= step) break;
-    keep = end + 1;
-  }
-  if (std::fflush(f) != 0 || ftruncate(fileno(f), off_t(keep)) != 0 ||
-      std::fseek(f, 0, SEEK_END) != 0) {
-    std::fclose(f);
-    throw Error("IO WRITE", std::string("cannot continue it: ") + std::strerror(errno));
-  }
-  file_ = f;
-  return true;
-}
-
-void CsvRecorder::finish() {
-  if (!file_) return;
-  const bool flushed = std::fflush(file_) == 0;
-  const int error = errno;
-  const bool closed = std::fclose(file_) == 0;
-  file_ = nullptr;
-  if (!flushed || !closed)
-    throw Error("IO WRITE",
-                std::string("closing failed: ") + std::strerror(flushed ? errno : error));
-}
-
 namespace {
-
 
 // The columns of one element, in order (docs/output.md says what each is).
 constexpr const char* kElementColumns[] = {

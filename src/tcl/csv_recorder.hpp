@@ -1,27 +1,25 @@
 #pragma once
-// A recorder that writes a CSV time series: a header line, then one row per
-// record with the step count, the time and the values of a subclass. Each row
-// is flushed as it is written, so that a reader (plot) sees every row so far.
-#include <cstdio>
+// A recorder that writes a CSV time series (io::CsvWriter): one row per
+// record with the step count, the time and the values of a subclass.
 #include <string>
 #include <vector>
 
-#include "sandflow/tcl/session.hpp"
+#include "sandflow/io/csv_writer.hpp"
+#include "sandflow/tcl/recorder.hpp"
 
 namespace sf::tcl {
 
 class CsvRecorder : public Recorder {
  public:
   // `columns` are the names after "step,time".
-  CsvRecorder(std::string path, int every, std::vector<std::string> columns);
-  ~CsvRecorder() override;
+  CsvRecorder(std::string path, int every, const std::vector<std::string>& columns);
   // The first record creates (or truncates) the file and writes the header;
   // when it fails, no file is left.
   // While a checkpoint's recordings start again (Session::resumeStep), the
   // first record continues an existing file of the same columns: rows from
   // that step on are dropped, the header is kept.
   void record(const Session& s) final;
-  void finish() final;
+  void finish() final { writer_.close(); }
   bool resumable() const final { return true; }
 
  protected:
@@ -30,10 +28,7 @@ class CsvRecorder : public Recorder {
   virtual void values(const Session& s, std::vector<double>& out) const = 0;
 
  private:
-  void writeOrThrow(const std::string& text);
-  bool resume(long long step);  // false: no such file (or another series) to continue
-  std::vector<std::string> columns_;
-  std::FILE* file_ = nullptr;
+  io::CsvWriter writer_;
   std::vector<double> scratch_;
 };
 

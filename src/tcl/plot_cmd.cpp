@@ -1,31 +1,17 @@
 // plot OUT.png CSVFILE ?options?: a PNG line plot of columns of a CSV file
 // (what output csv and record write), drawn by gnuplot (pngcairo); -series
-// adds columns of other files, -reference lines of a function of x.
-//
-// The data gnuplot plots is what this command read and checked: it goes into
-// the script as one datablock per series, so gnuplot never opens a CSV file
-// itself. A reference reaches gnuplot as numbers formatted here, in an
-// expression this file writes (referenceExpression), never as user text. Text
-// (titles, labels, column names, the output path) goes in single-quoted
-// gnuplot strings, where neither backquotes nor macros are expanded (see
-// gnuplotString). The PNG is written under a temporary
-// name in OUT's folder and renamed into place only when gnuplot succeeded.
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <algorithm>
-#include <cerrno>
+// adds columns of other files, -reference lines of a function of x. This file
+// reads the options and checks what it can before any file is read; reading,
+// the gnuplot script and running gnuplot are io::plotCsv's
+// (include/sandflow/io/gnuplot.hpp).
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <iterator>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "sandflow/io/find_program.hpp"
+#include "sandflow/io/gnuplot.hpp"
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/session.hpp"
 
@@ -101,329 +87,15 @@ constexpr const char* kDashes[] = {"solid", "dashed", "dotted", "dashdot", nullp
 constexpr const char* kAxes[] = {"y", "y2", nullptr};
 constexpr const char* kKeys[] = {"topleft",     "topright", "bottomleft",
                                  "bottomright", "off",      nullptr};
-constexpr const char* kKeyPositions[] = {"top left", "top right", "bottom left", "bottom right"};
 constexpr const char* kReferenceKinds[] = {"constant", "power", nullptr};
 constexpr const char* kReferenceForms[] = {"constant C", "power C X0 P"};
 constexpr int kReferenceNumbers[] = {1, 3};
 constexpr int kMaxPixels = 20000;
 
-// A series as the options give it: a column of a file, against another.
-struct SeriesSpec {
-  std::string y;
-  std::optional<std::string> file, x, title;
-  std::optional<int> style;
-  int dash = 0, axis = 0;
-};
-
-// A function of x drawn as a reference line: only numbers go into gnuplot's
-// expression, formatted here (see referenceExpression).
-struct ReferenceSpec {
-  int kind = 0;  // kReferenceKinds
-  double c = 0, x0 = 1, p = 1;
-  std::string text;  // as given, for messages
-  std::optional<std::string> title;
-  int dash = 1, axis = 0;
-};
-
-// An axis range; an empty bound is automatic.
-struct Range {
-  std::optional<double> lo, hi;
-};
-
-struct PlotOptions {
-  std::optional<std::string> x, title, xlabel, ylabel, y2label;
-  std::optional<std::vector<std::string>> y, y2;
-  std::vector<SeriesSpec> series;
-  std::vector<ReferenceSpec> references;
-  bool logx = false, logy = false, xreverse = false;
-  Range xrange, yrange;
-  std::optional<int> key;
-  int width = 640, height = 480;
-  int style = 0;
-};
-
-std::string trim(const std::string& s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return "";
-  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
-}
-
-std::vector<std::string> splitFields(const std::string& line) {
-  std::vector<std::string> fields;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = line.find(',', start);
-    fields.push_back(trim(line.substr(start, comma - start)));
-    if (comma == std::string::npos) return fields;
-    start = comma + 1;
-  }
-}
-
-// A CSV file as text: the header's names and each data row with its line number.
-struct Csv {
-  std::vector<std::string> names;
-  std::vector<std::vector<std::string>> rows;
-  std::vector<int> lines;
-};
-
-Csv readCsv(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("IO OPEN", "cannot read \"" + path + "\": " + std::strerror(errno));
-  Csv csv;
-  std::string line;
-  int number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    if (trim(line).empty()) continue;
-    std::vector<std::string> fields = splitFields(line);
-    if (csv.names.empty()) {
-      csv.names = std::move(fields);
-      continue;
-    }
-    if (fields.size() != csv.names.size())
-      throw Error("VALUE CSV", "line " + std::to_string(number) + " of \"" + path + "\" has " +
-                                   std::to_string(fields.size()) + " values, the header " +
-                                   std::to_string(csv.names.size()) + " columns");
-    csv.rows.push_back(std::move(fields));
-    csv.lines.push_back(number);
-  }
-  if (in.bad()) throw Error("IO READ", "reading \"" + path + "\" failed");
-  if (csv.names.empty()) throw Error("VALUE CSV", "\"" + path + "\" is empty: no header line");
-  if (csv.rows.empty()) throw Error("VALUE CSV", "\"" + path + "\" has a header but no data rows");
-  return csv;
-}
-
-// The Tcl-style message for a column that is not in the header.
-std::string badColumn(const std::string& name, const std::vector<std::string>& names,
-                      const std::string& file = "") {
-  std::string message =
-      "bad column \"" + name + "\"" + (file.empty() ? "" : " in \"" + file + "\"") + ": must be ";
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    if (k > 0) message += names.size() > 2 ? ", " : " ";
-    if (k > 0 && k + 1 == names.size()) message += "or ";
-    message += names[k];
-  }
-  return message;
-}
-
-// A column's index; `file` is named in the message when it is not the plot's
-// CSVFILE `main`.
-int columnIndex(const Csv& csv, const std::string& name, const std::string& file = "",
-                const std::string& main = "") {
-  for (std::size_t k = 0; k < csv.names.size(); ++k)
-    if (csv.names[k] == name) return int(k);
-  if (file != main) throw Error("LOOKUP COLUMN", badColumn(name, csv.names, file));
-  throw Error("LOOKUP COLUMN", badColumn(name, csv.names));
-}
-
-// A gnuplot string expression that stands for `text`: runs of other characters
-// in single quotes (where nothing is expanded), joined by "." to a "'" piece
-// for each quote and a "\n" piece for each line break (gnuplot reads a string
-// that starts with '' as empty, so quotes are not doubled); other control
-// characters become spaces.
-std::string gnuplotString(const std::string& text) {
-  std::vector<std::string> pieces;
-  std::string run;
-  auto endRun = [&] {
-    if (!run.empty()) pieces.push_back("'" + run + "'");
-    run.clear();
-  };
-  for (char c : text) {
-    if (c == '\'' || c == '\n') {
-      endRun();
-      pieces.push_back(c == '\'' ? "\"'\"" : "\"\\n\"");
-    } else {
-      run += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
-    }
-  }
-  endRun();
-  if (pieces.empty()) return "''";
-  std::string out = pieces[0];
-  for (std::size_t k = 1; k < pieces.size(); ++k) {
-    out += '.';
-    out += pieces[k];
-  }
-  return out;
-}
-
-// The full path of an executable on PATH, or "" when there is none.
-std::string findProgram(const std::string& name) {
-  const char* path = std::getenv("PATH");
-  std::string dirs = path ? path : "";
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t colon = dirs.find(':', start);
-    std::string candidate = dirs.substr(start, colon - start);
-    if (candidate.empty()) candidate += '.';
-    candidate += '/';
-    candidate += name;
-    struct stat st;
-    if (::stat(candidate.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
-        ::access(candidate.c_str(), X_OK) == 0)
-      return candidate;
-    if (colon == std::string::npos) return "";
-    start = colon + 1;
-  }
-}
-
-// A new, empty file beside `out` (same folder, so that rename is atomic).
-std::string makeTemporary(const std::string& out) {
-  const std::size_t slash = out.rfind('/');
-  const std::string dir = slash == std::string::npos ? "" : out.substr(0, slash + 1);
-  const std::string tail = slash == std::string::npos ? out : out.substr(slash + 1);
-  std::string name = dir + "." + tail + ".XXXXXX";
-  const int fd = ::mkstemp(name.data());
-  if (fd < 0) throw Error("IO OPEN", "cannot write \"" + out + "\": " + std::strerror(errno));
-  const mode_t mask = ::umask(0);  // the mode an ordinary new file gets
-  ::umask(mask);
-  ::fchmod(fd, 0666 & ~mask);
-  ::close(fd);
-  return name;
-}
-
-// One series resolved: its file read and its columns found.
-struct Series {
-  const Csv* csv;
-  std::string path;
-  int x, y;
-  std::string title;
-  int style, dash, axis;
-};
-
-// A number as gnuplot reads it: always a real (gnuplot's 1/2 is 0), in parentheses.
-std::string gnuplotNumber(double v) {
-  std::string text = formatNumber(v);
-  if (text.find_first_of(".e") == std::string::npos) text += ".0";
-  return "(" + text + ")";
-}
-
-// The reference's function of x, built from its numbers only.
-std::string referenceExpression(const ReferenceSpec& r) {
-  if (r.kind == 0) return gnuplotNumber(r.c);
-  return gnuplotNumber(r.c) + "*(x/" + gnuplotNumber(r.x0) + ")**" + gnuplotNumber(r.p);
-}
-
-// Its default title: the formula, as a person writes it.
-std::string referenceTitle(const ReferenceSpec& r) {
-  if (r.kind == 0) return formatNumber(r.c);
-  return formatNumber(r.c) + " (x / " + formatNumber(r.x0) + ")^" + formatNumber(r.p);
-}
-
-// Checks a series' columns and writes them as the gnuplot datablock $dK.
-std::string dataBlock(const Series& s, std::size_t k, const PlotOptions& o) {
-  std::string block = "$d" + std::to_string(k) + " << EOD\n";
-  const Csv& csv = *s.csv;
-  for (std::size_t r = 0; r < csv.rows.size(); ++r) {
-    for (int axis = 0; axis < 2; ++axis) {
-      const int column = axis == 0 ? s.x : s.y;
-      const std::string& text = csv.rows[r][column];
-      const std::string where = "column \"" + csv.names[column] + "\", line " +
-                                std::to_string(csv.lines[r]) + " of \"" + s.path + "\"";
-      char* end = nullptr;
-      const double v = std::strtod(text.c_str(), &end);
-      if (text.empty() || *end != '\0' || !std::isfinite(v))
-        throw Error("VALUE CSV", "\"" + text + "\" in " + where + " is not a finite number");
-      const bool log = axis == 0 ? o.logx : o.logy && s.axis == 0;
-      if (log && v <= 0)
-        throw Error("VALUE LOG", std::string(axis == 0 ? "-logx" : "-logy") +
-                                     " needs values > 0, but " + where + " is " + text +
-                                     " (gnuplot would leave it out)");
-      if (axis > 0) block += ' ';
-      block += formatNumber(v);
-    }
-    block += '\n';
-  }
-  return block + "EOD\n";
-}
-
-std::string rangeText(const Range& r, bool reverse) {
-  auto bound = [](const std::optional<double>& b) { return b ? formatNumber(*b) : "*"; };
-  if (reverse && r.lo && r.hi) return "[" + bound(r.hi) + ":" + bound(r.lo) + "]";
-  return "[" + bound(r.lo) + ":" + bound(r.hi) + "]" + (reverse ? " reverse" : "");
-}
-
-// Filled circle, square, triangles, diamond, then the same open: a series
-// drawn with points can be told apart without colour.
-constexpr int kPointTypes[] = {7, 5, 9, 11, 13, 6, 4, 8, 10, 12};
-// Reference lines are grey, so that they read as guides, not data.
-constexpr const char* kReferenceGreys[] = {"gray40", "gray65", "gray25", "gray80"};
-
-std::string gnuplotScript(const std::vector<Series>& series, const std::string& xname,
-                          const PlotOptions& o, const std::string& temporary) {
-  // Enhanced text for the numbers only (1×10^6 on a log axis): every text item
-  // is noenhanced, so that ^ _ @ { } in titles are drawn as they are.
-  std::string s = "set terminal pngcairo enhanced size " + std::to_string(o.width) + "," +
-                  std::to_string(o.height) + "\n";
-  s += "set output " + gnuplotString(temporary) + "\n";
-  for (std::size_t k = 0; k < series.size(); ++k) s += dataBlock(series[k], k, o);
-  if (o.title) s += "set title " + gnuplotString(*o.title) + " noenhanced\n";
-  s += "set xlabel " + gnuplotString(o.xlabel.value_or(xname)) + " noenhanced\n";
-  // An axis's default label is its column when only one series uses it.
-  const std::string* only[2] = {nullptr, nullptr};
-  int count[2] = {0, 0};
-  for (const Series& one : series)
-    if (++count[one.axis] == 1) only[one.axis] = &one.csv->names[one.y];
-  if (o.ylabel)
-    s += "set ylabel " + gnuplotString(*o.ylabel) + " noenhanced\n";
-  else if (count[0] == 1)
-    s += "set ylabel " + gnuplotString(*only[0]) + " noenhanced\n";
-  bool y2 = count[1] > 0;
-  for (const ReferenceSpec& r : o.references) y2 = y2 || r.axis == 1;
-  if (y2) {
-    s += "set y2tics\nset ytics nomirror\n";
-    if (o.y2label)
-      s += "set y2label " + gnuplotString(*o.y2label) + " noenhanced\n";
-    else if (count[1] == 1)
-      s += "set y2label " + gnuplotString(*only[1]) + " noenhanced\n";
-  }
-  s += "set key noenhanced\n";
-  if (o.key && *o.key < 4)
-    s += std::string("set key ") + kKeyPositions[*o.key] + " box opaque\n";
-  else if (o.key || series.size() + o.references.size() == 1)
-    s += "set key off\n";
-  if (o.logx) s += "set logscale x\n";
-  if (o.logy) s += "set logscale y\n";
-  if (o.xreverse || o.xrange.lo || o.xrange.hi)
-    s += "set xrange " + rangeText(o.xrange, o.xreverse) + "\n";
-  if (o.yrange.lo || o.yrange.hi) s += "set yrange " + rangeText(o.yrange, false) + "\n";
-  s += "set grid\n";
-  s += "plot ";
-  auto axes = [](int axis) { return axis == 1 ? " axes x1y2" : ""; };
-  auto dash = [](int d) { return " dt " + std::to_string(d + 1); };
-  for (std::size_t k = 0; k < series.size(); ++k) {
-    const Series& one = series[k];
-    if (k > 0) s += ", \\\n     ";
-    // Few points get larger marks: a convergence study has five, a time series hundreds.
-    const std::string mark = " pt " + std::to_string(kPointTypes[k % std::size(kPointTypes)]) +
-                             (one.csv->rows.size() <= 50 ? " ps 1.2" : " ps 0.6");
-    s += "$d" + std::to_string(k) + " using 1:2" + axes(one.axis) + " with ";
-    if (one.style == 0) s += "lines lw 1.5" + dash(one.dash);
-    if (one.style == 1) s += "points" + mark;
-    if (one.style == 2) s += "linespoints lw 1.5" + dash(one.dash) + mark;
-    s += " title " + gnuplotString(one.title) + " noenhanced";
-  }
-  for (std::size_t k = 0; k < o.references.size(); ++k) {
-    const ReferenceSpec& r = o.references[k];
-    s += ", \\\n     " + referenceExpression(r) + axes(r.axis) + " with lines lw 1.5" +
-         dash(r.dash) + " lc rgb '" + kReferenceGreys[k % std::size(kReferenceGreys)] + "' title " +
-         gnuplotString(r.title.value_or(referenceTitle(r))) + " noenhanced";
-  }
-  return s + "\n";
-}
-
-// Runs gnuplot on the script through Tcl's exec; on failure returns gnuplot's
-// messages.
-bool runGnuplot(Tcl_Interp* interp, const std::string& program, const std::string& script,
-                std::string& messages) {
-  Tcl_Obj* words[] = {Tcl_NewStringObj("::exec", -1), newString(program),
-                      Tcl_NewStringObj("<<", -1), newString(script), Tcl_NewStringObj("2>@1", -1)};
-  for (Tcl_Obj* w : words) Tcl_IncrRefCount(w);
-  const int code = Tcl_EvalObjv(interp, 5, words, TCL_EVAL_GLOBAL);
-  for (Tcl_Obj* w : words) Tcl_DecrRefCount(w);
-  messages = Tcl_GetStringResult(interp);
-  Tcl_ResetResult(interp);
-  return code == TCL_OK;
-}
+using SeriesSpec = io::PlotSeriesSpec;
+using ReferenceSpec = io::PlotReference;
+using Range = io::PlotRange;
+using PlotOptions = io::PlotOptions;
 
 bool getColumns(Tcl_Interp* interp, Tcl_Obj* v, const char* option,
                 std::optional<std::vector<std::string>>& out) {
@@ -631,7 +303,7 @@ int Plot(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   PlotOptions o;
   if (!parsePlotOptions(interp, objc, objv, o)) return TCL_ERROR;
   if (checkLogAxes(interp, o) != TCL_OK) return TCL_ERROR;
-  const std::string program = findProgram("gnuplot");
+  const std::string program = io::findProgram("gnuplot");
   if (program.empty())
     return fail(interp, "RESOURCE GNUPLOT",
                 "plot needs gnuplot, which is not on the PATH: install it (Debian package "
@@ -640,61 +312,7 @@ int Plot(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   return guarded(interp, [&] {
     requireConfined(s, out);
     requireConfined(s, path);
-    // Rows being recorded are in the file already: recorders flush each row.
-    // Each file is read once, however many series it gives.
-    std::map<std::string, Csv> files;
-    files.emplace(path, readCsv(path));
-    const Csv& csv = files.at(path);
-    const bool hasTime = std::find(csv.names.begin(), csv.names.end(), "time") != csv.names.end();
-    const int x = columnIndex(csv, o.x.value_or(hasTime ? "time" : csv.names[0]));
-    std::vector<Series> series;
-    auto add = [&](const Csv& from, const std::string& file, int xcol, int ycol,
-                   const std::optional<std::string>& title, std::optional<int> style, int dash,
-                   int axis) {
-      series.push_back({&from, file, xcol, ycol, title.value_or(from.names[ycol]),
-                        style.value_or(o.style), dash, axis});
-    };
-    std::vector<int> y2;
-    if (o.y2)
-      for (const std::string& name : *o.y2) y2.push_back(columnIndex(csv, name));
-    if (o.y) {
-      for (const std::string& name : *o.y) add(csv, path, x, columnIndex(csv, name), {}, {}, 0, 0);
-    } else if (o.series.empty()) {
-      for (int k = 0; k < int(csv.names.size()); ++k)
-        if (k != x && csv.names[k] != "step" && std::find(y2.begin(), y2.end(), k) == y2.end())
-          add(csv, path, x, k, {}, {}, 0, 0);
-    }
-    for (int k : y2) add(csv, path, x, k, {}, {}, 0, 1);
-    if (series.empty() && o.series.empty())
-      throw Error("VALUE COLUMNS",
-                  "\"" + path + "\" has no column to plot against \"" + csv.names[x] + "\"");
-    for (const SeriesSpec& spec : o.series) {
-      const std::string file = spec.file.value_or(path);
-      auto found = files.find(file);
-      if (found == files.end()) {
-        requireConfined(s, file);
-        found = files.emplace(file, readCsv(file)).first;
-      }
-      const Csv& from = found->second;
-      const int xcol = columnIndex(from, spec.x.value_or(csv.names[x]), file, path);
-      const int ycol = columnIndex(from, spec.y, file, path);
-      add(from, file, xcol, ycol, spec.title, spec.style, spec.dash, spec.axis);
-    }
-    const std::string temporary = makeTemporary(out);
-    std::string messages;
-    try {
-      const std::string script = gnuplotScript(series, csv.names[x], o, temporary);
-      if (!runGnuplot(interp, program, script, messages))
-        throw Error("IO GNUPLOT", "gnuplot failed: " + trim(messages));
-      struct stat st;
-      if (::stat(temporary.c_str(), &st) != 0 || st.st_size == 0)
-        throw Error("IO GNUPLOT", "gnuplot wrote no image: " + trim(messages));
-      if (std::rename(temporary.c_str(), out.c_str()) != 0)
-        throw Error("IO WRITE", "cannot write \"" + out + "\": " + std::strerror(errno));
-    } catch (...) {
-      std::remove(temporary.c_str());
-      throw;
-    }
+    io::plotCsv(program, out, path, o, [&](const std::string& file) { requireConfined(s, file); });
     Tcl_SetObjResult(interp, newString(out));
     return TCL_OK;
   });

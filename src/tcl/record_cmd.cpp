@@ -11,7 +11,6 @@
 namespace sf::tcl {
 namespace {
 
-
 enum Quantity {
   qKinetic,
   qElements,
