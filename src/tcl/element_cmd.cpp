@@ -112,7 +112,6 @@ struct Edit {
   std::optional<double> stress;  // NaN: remove the servo
 };
 
-
 bool getVec3(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, Eigen::Vector3d& out) {
   std::vector<double> v;
   if (!getDoubles(interp, obj, what, 3, v)) return false;
@@ -501,57 +500,27 @@ int ElementConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
   }
   Edit e;
   if (!parseEdit(interp, objc, objv, 2, table, a, e)) return TCL_ERROR;
-  dem::Bodies& b = a.bodies();
-  const ShapeType type = b.shape[slot]->type();
-  if (e.radius && type != ShapeType::disc)
-    return fail(interp, "VALUE RADIUS", "-radius applies to discs only");
-  if (e.stress && type != ShapeType::wall)
-    return fail(interp, "VALUE STRESS", "-stress applies to walls only");
-  if ((e.from || e.to) && type != ShapeType::wall)
-    return fail(interp, "VALUE WALL", "-from and -to apply to walls only");
-  if ((e.from || e.to) && (e.center || e.angle))
-    return fail(interp, "VALUE WALL", "give a wall -from/-to or -center/-angle, not both");
-  std::optional<dem::Wall> newWall;
-  Vec2 wallCenter = Vec2::Zero();
-  double wallAngle = 0;
-  if (e.from || e.to) {
-    const auto& w = static_cast<const dem::Wall&>(*b.shape[slot]);
-    const auto [p0, q0] = w.ends(b.x[slot], b.angle[slot]);
-    const Vec2 p = e.from.value_or(p0), q = e.to.value_or(q0);
-    if (!((q - p).norm() > 0))
-      return fail(interp, "VALUE WALL", "wall has zero length: -from equals -to");
-    newWall.emplace((q - p).norm(), w.thickness());
-    wallCenter = 0.5 * (p + q);
-    wallAngle = std::atan2((q - p).y(), (q - p).x());
-  }
-  std::optional<dem::Disc> newDisc;
-  if (e.radius) newDisc.emplace(*e.radius);
-  const dem::Shape& newShape = newDisc   ? static_cast<const dem::Shape&>(*newDisc)
-                               : newWall ? static_cast<const dem::Shape&>(*newWall)
-                                         : *b.shape[slot];
+  dem::ElementEdit edit;
+  edit.center = e.center, edit.angle = e.angle, edit.from = e.from, edit.to = e.to;
+  edit.radius = e.radius, edit.material = e.material, edit.velocity = e.velocity;
+  edit.force = e.force, edit.acceleration = e.acceleration, edit.hold = e.hold;
+  edit.stress = e.stress;
   try {
-    dem::Assembly::checkMass(newShape, a.materials()[e.material.value_or(b.material[slot])]);
+    a.configure(a.bodies().id[slot], edit);
   } catch (const Error& error) {
-    return fail(interp, error);
+    fail(interp, error);
+    // The kernel names the field; errorInfo names the option.
+    const std::string& code = error.code();
+    const char* option = code == "VALUE RADIUS"   ? "-radius"
+                         : code == "VALUE STRESS" ? "-stress"
+                         : code == "VALUE WALL"   ? (e.from ? "-from" : "-to")
+                         : code == "VALUE MASS"   ? (e.radius     ? "-radius"
+                                                     : e.material ? "-material"
+                                                                  : nullptr)
+                                                  : nullptr;
+    if (option) noteOptionOnce(interp, option);
+    return TCL_ERROR;
   }
-  // Everything is checked: apply.
-  if (e.center) b.x[slot] = *e.center;
-  if (e.angle) b.angle[slot] = *e.angle;
-  if (newDisc) b.shape[slot] = newDisc->clone();
-  if (newWall) {
-    b.shape[slot] = newWall->clone();
-    b.x[slot] = wallCenter;
-    b.angle[slot] = wallAngle;
-  }
-  if (e.material) b.material[slot] = *e.material;
-  if (e.velocity) b.v[slot] = e.velocity->head<2>(), b.w[slot] = (*e.velocity)[2];
-  if (e.hold) b.hold[slot] = *e.hold;
-  if (e.force) b.appliedForce[slot] = e.force->head<2>(), b.appliedTorque[slot] = (*e.force)[2];
-  if (e.acceleration) b.acceleration[slot] = *e.acceleration;
-  if (e.stress) a.setPlateStress(b.id[slot], *e.stress);
-  b.started[slot] = 0;  // velocities or position set by hand: restart the half step
-  a.updateMass(slot);
-  a.touched();
   return TCL_OK;
 }
 

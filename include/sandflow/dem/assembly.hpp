@@ -12,6 +12,7 @@
 #include "sandflow/dem/bond.hpp"
 #include "sandflow/dem/contact_list.hpp"
 #include "sandflow/dem/dess.hpp"
+#include "sandflow/dem/element_edit.hpp"
 #include "sandflow/dem/material.hpp"
 #include "sandflow/dem/narrow_phase.hpp"
 
@@ -78,6 +79,9 @@ class Assembly {
 
   int add(ElementDef def);  // validated; returns the id
   void remove(int id);
+  // Changes element `id` by hand: checks the whole edit, then applies it;
+  // throws sf::Error and changes nothing when a part is refused.
+  void configure(int id, const ElementEdit& edit);
   int nextId() const;
   int slot(int id) const;  // throws if no such element
   bool empty() const { return bodies_.size() == 0; }

@@ -1,0 +1,24 @@
+#pragma once
+// A change to one element, every part optional. Assembly::configure checks
+// all of it, then applies all of it, or throws sf::Error and changes nothing.
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+
+#include "sandflow/geometry/vec2.hpp"
+
+namespace sf::dem {
+
+struct ElementEdit {
+  std::optional<Vec2> center;
+  std::optional<double> angle;
+  std::optional<Vec2> from, to;                    // a wall's ends (instead of centre and angle)
+  std::optional<double> radius;                    // a disc's
+  std::optional<int> material;                     // index in the material table
+  std::optional<Eigen::Vector3d> velocity, force;  // {vx vy w}, {fx fy torque}
+  std::optional<Vec2> acceleration;
+  std::optional<std::uint8_t> hold;
+  std::optional<double> stress;  // a wall's servo stress; NaN removes the servo
+};
+
+}  // namespace sf::dem

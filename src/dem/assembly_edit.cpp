@@ -1,0 +1,59 @@
+// Assembly::configure: one element changed by hand, checked whole before any
+// column is written.
+#include <cmath>
+
+#include "sandflow/dem/assembly.hpp"
+
+namespace sf::dem {
+
+void Assembly::configure(int id, const ElementEdit& e) {
+  const int s = slot(id);
+  Bodies& b = bodies_;
+  const ShapeType type = b.shape[s]->type();
+  if (e.radius && type != ShapeType::disc)
+    throw Error("VALUE RADIUS", "a radius applies to discs only");
+  if (e.stress && type != ShapeType::wall)
+    throw Error("VALUE STRESS", "a servo stress applies to walls only");
+  if (e.stress && std::isinf(*e.stress))
+    throw Error("VALUE STRESS", "a servo stress must be finite");
+  if ((e.from || e.to) && type != ShapeType::wall)
+    throw Error("VALUE WALL", "ends apply to walls only");
+  if ((e.from || e.to) && (e.center || e.angle))
+    throw Error("VALUE WALL", "give a wall its ends or its centre and angle, not both");
+  if (e.material && (*e.material < 0 || *e.material >= materials_.size()))
+    throw Error("LOOKUP MATERIAL", "no material " + std::to_string(*e.material));
+  // The new shape, if any, and its pose.
+  std::unique_ptr<Shape> shape;
+  Vec2 center = e.center.value_or(b.x[s]);
+  double angle = e.angle.value_or(b.angle[s]);
+  if (e.from || e.to) {
+    const auto& w = static_cast<const Wall&>(*b.shape[s]);
+    const auto [p0, q0] = w.ends(b.x[s], b.angle[s]);
+    const Vec2 p = e.from.value_or(p0), q = e.to.value_or(q0);
+    if (!((q - p).norm() > 0))
+      throw Error("VALUE WALL", "wall has zero length: its two ends are the same point");
+    shape = std::make_unique<Wall>((q - p).norm(), w.thickness());
+    center = 0.5 * (p + q);
+    angle = std::atan2((q - p).y(), (q - p).x());
+  }
+  if (e.radius) shape = std::make_unique<Disc>(*e.radius);
+  checkMass(shape ? *shape : *b.shape[s], materials_[e.material.value_or(b.material[s])]);
+  // Everything is checked: apply.
+  b.x[s] = center;
+  b.angle[s] = angle;
+  if (shape) b.shape[s] = std::move(shape);
+  if (e.material) b.material[s] = *e.material;
+  if (e.velocity) b.v[s] = e.velocity->head<2>(), b.w[s] = (*e.velocity)[2];
+  if (e.hold) b.hold[s] = *e.hold;
+  if (e.force) b.appliedForce[s] = e.force->head<2>(), b.appliedTorque[s] = (*e.force)[2];
+  if (e.acceleration) b.acceleration[s] = *e.acceleration;
+  if (e.stress) {
+    b.stress[s] = *e.stress;
+    if (!std::isnan(*e.stress)) b.hold[s] = holdX | holdY | holdRotation;
+  }
+  b.started[s] = 0;  // velocities or position set by hand: restart the half step
+  updateMass(s);
+  touched();
+}
+
+}  // namespace sf::dem
