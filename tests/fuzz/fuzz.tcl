@@ -43,7 +43,8 @@ set dir [file normalize ${-dir}]
 # wherever the fuzzer was started.
 cd $dir
 # A run depends on the files of this run only: those of an earlier one go.
-foreach pattern {ck*.sfck mutant.* vtk* series* e*.csv r*.csv shot*.png plot.png fuzz.log nosuchdir} {
+set mutants 0
+foreach pattern {ck*.sfck mutant* vtk* series* e*.csv r*.csv shot*.png plot.png fuzz.log nosuchdir} {
     file delete -force {*}[glob -nocomplain -directory $dir $pattern]
 }
 expr {srand(${-seed})}
@@ -387,7 +388,8 @@ proc mutantCheckpoint {} {
     global dir
     incr ::counts(mutantCheckpoints)
     set saved [lsort [glob -nocomplain -directory $dir ck*.sfck]]
-    set out [file join $dir mutant.sfck]
+    # A file of its own for each, kept: fuzz.log then replays the run.
+    set out [file join $dir mutant[incr ::mutants].sfck]
     if {![llength $saved] || [chance 0.1]} {
         set data [weighted [list 1 {} 1 "\x89SFCKP\r\n" 1 [string repeat \x00 40] 1 "plain text\n" \
                       1 [binary format a8iuiuwiu "\x89SFCKP\r\n" 1 0x01020304 0 0]]]
@@ -449,7 +451,7 @@ proc mutantScript {} {
             duplicate { append text \n[pick $lines] }
         }
     }
-    set out [file join $dir mutant.tcl]
+    set out [file join $dir mutant[incr ::mutants].tcl]
     set f [open $out w]
     fconfigure $f -encoding utf-8
     puts $f $text
