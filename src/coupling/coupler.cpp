@@ -97,6 +97,7 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   // are still in cache.
   auto measure = [&](Cached& c, const Footprint& f, const Vec2& reference) {
     cover(f, reference, grid, settings.subcells, c.cells);
+    c.overlap = selfOverlap(f, grid);
     c.runs.clear();
     // Consecutive nodes are the next cell of the same row (a row's last cell
     // and the next row's first have the padding between them).
@@ -122,15 +123,26 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     // The new pose; the cells and runs vectors keep their capacity.
     c.id = b.id[s], c.x = b.x[s], c.angle = b.angle[s], c.area = shape.area();
     c.reach = b.reach[s], c.radius = 0, c.outside = false;
-    c.cells.clear(), c.runs.clear();
+    c.cells.clear(), c.runs.clear(), c.overlap = 0;
     if (const auto f = footprintOf(shape, b.x[s], b.angle[s])) measure(c, *f, b.x[s]);
   }
   for (std::size_t k = 0; k < circles.size(); ++k) {
     const lb::CircleObstacle& o = circles[k];
     Cached& c = circles_[k];
     if (!stale(c, o.id, o.centre, 0, 0, 0, o.radius, o.outside)) continue;
-    c = Cached{o.id, o.centre, 0, 0, 0, o.radius, o.outside, {}, {}};
+    c = Cached{o.id, o.centre, 0, 0, 0, o.radius, o.outside, {}, {}, 0};
     measure(c, *circleFootprint(o.centre, o.radius, o.outside), o.centre);
+  }
+
+  overlap_ = SelfOverlap{};
+  for (std::size_t o = 0; o < elements_.size() + circles_.size(); ++o) {
+    const int axes = coverOf(std::int32_t(o)).overlap;
+    if (axes == 0 || overlap_.count++ > 0) continue;  // the first names them
+    overlap_.axes = axes;
+    if (o < elements_.size())
+      overlap_.element = b.id[o];
+    else
+      overlap_.obstacle = circles[o - elements_.size()].id;
   }
 
   const auto t1 = Clock::now();
@@ -510,6 +522,22 @@ void Coupler::solveVelocities(const lb::Lattice& lattice, const dem::Assembly& a
       }
     velocity_[s] = A.ldlt().solve(rhs);
   }
+}
+
+double Coupler::explicitFeedback(const lb::Lattice& lattice, const dem::Bodies& b, int s) const {
+  const bool moves = (b.hold[s] & (dem::holdX | dem::holdY)) != (dem::holdX | dem::holdY);
+  const bool turns = !(b.hold[s] & dem::holdRotation);
+  if (std::size_t(s) >= elements_.size() || elements_[s].cells.empty() || (!moves && !turns))
+    return 0;
+  const double a = lattice.params().tau - 0.5, h2 = lattice.params().h * lattice.params().h;
+  double area = 0, moment = 0;  // sums of B h^2 and B |arm|^2 h^2
+  for (const CellCover& c : elements_[s].cells) {
+    const double beta = c.eps >= 1 ? 1.0 : c.eps * a / ((1.0 - c.eps) + a);
+    area += beta * h2;
+    moment += beta * c.arm.squaredNorm() * h2;
+  }
+  const double rho = lattice.params().def.density;
+  return std::max(moves ? rho * area / b.mass[s] : 0.0, turns ? rho * moment / b.inertia[s] : 0.0);
 }
 
 void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Settings& settings,

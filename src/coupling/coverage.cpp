@@ -146,21 +146,36 @@ bool coverByRows(const Footprint& f, const Vec2& reference, const Grid& g, int s
   return true;
 }
 
+// The cell that coordinate x lies in along an axis, unwrapped. An element may
+// be anywhere (x = 1e23), and an int ends at 2^31: so far out, a clamped index
+// still touches no cell of its footprint.
+int cellOf(double x, double origin, double h) {
+  return int(std::floor(std::clamp((x - origin) / h, -1e9, 1e9)));
+}
+
 }  // namespace
+
+int selfOverlap(const Footprint& f, const Grid& g) {
+  if (f.everywhere) return 0;
+  const double h = g.h;
+  const bool x =
+      g.periodicX &&
+      cellOf(f.box.hi.x(), g.origin.x(), h) - cellOf(f.box.lo.x(), g.origin.x(), h) >= g.nx;
+  const bool y =
+      g.periodicY &&
+      cellOf(f.box.hi.y(), g.origin.y(), h) - cellOf(f.box.lo.y(), g.origin.y(), h) >= g.ny;
+  return (x ? 1 : 0) | (y ? 2 : 0);
+}
 
 void cover(const Footprint& f, const Vec2& reference, const Grid& g, int subcells,
            CellCovers& out) {
   // The cells to visit, unwrapped: the footprint's box, or the whole lattice.
   int i0 = 0, i1 = g.nx - 1, j0 = 0, j1 = g.ny - 1;
   if (!f.everywhere) {
-    // An element may be anywhere (x = 1e23), and an int ends at 2^31: so far
-    // out, a clamped index still touches no cell of its footprint.
-    auto cellOf = [&](double x, double origin) {
-      return int(std::floor(std::clamp((x - origin) / g.h, -1e9, 1e9)));
-    };
-    i0 = cellOf(f.box.lo.x(), g.origin.x()), i1 = cellOf(f.box.hi.x(), g.origin.x());
-    j0 = cellOf(f.box.lo.y(), g.origin.y()), j1 = cellOf(f.box.hi.y(), g.origin.y());
-    // A box wider than a periodic lattice would visit cells twice.
+    i0 = cellOf(f.box.lo.x(), g.origin.x(), g.h), i1 = cellOf(f.box.hi.x(), g.origin.x(), g.h);
+    j0 = cellOf(f.box.lo.y(), g.origin.y(), g.h), j1 = cellOf(f.box.hi.y(), g.origin.y(), g.h);
+    // A box wider than a periodic lattice would visit cells twice; the cells
+    // where it meets its own image are then covered wrongly (selfOverlap).
     if (g.periodicX) i1 = std::min(i1, i0 + g.nx - 1);
     if (g.periodicY) j1 = std::min(j1, j0 + g.ny - 1);
     if (!g.periodicX) i0 = std::max(i0, 0), i1 = std::min(i1, g.nx - 1);

@@ -477,6 +477,13 @@ std::vector<int> Lattice::obstacleIds() const {
   return ids;
 }
 
+bool Lattice::hasNoSlipSurfaces() const {
+  for (const SideDef& side : p_.def.sides)
+    if (side.kind == SideKind::noslip) return true;
+  return !circles_.empty() || std::any_of(obstacles_.begin(), obstacles_.end(),
+                                          [](const RectObstacle& o) { return !o.slip; });
+}
+
 ObstacleInfo Lattice::obstacleInfo(int id) const {
   ObstacleInfo info;
   auto circle = std::find_if(circles_.begin(), circles_.end(),

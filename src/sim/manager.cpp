@@ -5,10 +5,27 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "sandflow/core/error.hpp"
 
 namespace sf::sim {
+namespace {
+
+// A measured number for a message, to `digits` significant digits (a box's
+// width is 1.2000000000000002).
+std::string rounded(double value, int digits) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
+  return buffer;
+}
+
+// What marks each warning given once a run in the log (Manager::warned).
+constexpr std::string_view kBgkMarker = "use \"-collision trt\"";
+constexpr std::string_view kLightMarker = "too light for the explicit coupling";
+constexpr std::string_view kOverlapMarker = "its own periodic image";
+
+}  // namespace
 
 // The default thread count honours OMP_NUM_THREADS (else the machine's cores).
 Manager::Manager() : threads_(std::max(1, omp_get_max_threads())) {
@@ -38,11 +55,81 @@ void Manager::createLattice(lb::LatticeDef def) {
   lattice->setThreads(threads_);
   lattice_ = std::move(lattice);
   machWarned_ = false;
+  checkCollision();
 }
 
 void Manager::reconfigureLattice(const lb::LatticeDef& def) {
   lattice().reconfigure(lb::resolve(def));
   if (fixedTimestep_) fixedTimestep_ = lattice_->params().dt;
+  checkCollision();
+}
+
+// Given when the lattice is made or changed, and (for obstacles added since,
+// or a timestep that moved tau) at the step.
+void Manager::checkCollision() {
+  const lb::ResolvedLattice& p = lattice_->params();
+  if (p.def.collision != lb::Collision::bgk || !(p.tau > kBgkTauLimit) ||
+      !lattice_->hasNoSlipSurfaces() || warned(kBgkMarker))
+    return;
+  warn("tau " + rounded(p.tau, 6) + " with the BGK collision: its bounce-back walls slip, " +
+       "an error that grows as tau squared (channel flow 16 cells across is 5% off at tau 2, " +
+       "15% at 3, 54% at 5, 250% at 10): " + std::string(kBgkMarker) +
+       " (exact walls at any tau) or a tau of " + formatNumber(kBgkTauLimit) + " or less");
+}
+
+// Both want the coverage of this step (the coupler's prepare).
+void Manager::checkCoverage() {
+  const dem::Bodies& b = assembly_.bodies();
+  const coupling::SelfOverlap& o = coupler_.selfOverlapping();
+  if (o.count > 0 && !warned(kOverlapMarker)) {
+    const lb::ResolvedLattice& p = lattice_->params();
+    double wide = 0;  // the first one's extent along (the first of) its axes
+    const int axis = o.axes & 1 ? 0 : 1;
+    if (o.element >= 0) {
+      for (int s = 0; s < b.size(); ++s)
+        if (b.id[s] == o.element) {
+          const dem::Box box = b.shape[s]->bounds(b.x[s], b.angle[s]);
+          wide = box.hi[axis] - box.lo[axis];
+        }
+    } else {
+      for (const lb::CircleObstacle& c : lattice_->circles())
+        if (c.id == o.obstacle) wide = 2 * c.radius;
+    }
+    const double length = (axis == 0 ? p.nx : p.ny) * p.h;
+    const std::string more = o.count > 1 ? " (and " + std::to_string(o.count - 1) + " more)" : "";
+    warn((o.element >= 0 ? "element " + std::to_string(o.element)
+                         : "obstacle " + std::to_string(o.obstacle)) +
+         more + " is " + rounded(wide, 6) + " wide along " + (axis == 0 ? "x" : "y") +
+         (wide >= length ? ", as wide as the periodic lattice (" + rounded(length, 6) + ") or wider"
+                         : ", within a cell of the periodic lattice's " + rounded(length, 6)) +
+         ": it meets " + std::string(kOverlapMarker) +
+         ", and the cells there get wrong solid ratios (fluid flows through it); make the "
+         "lattice wider than the element by a cell or more");
+  }
+  if (coupling_.implicit || warned(kLightMarker)) return;
+  // |lambda| reaches 1 at r = 1 with the first-order integrator, at 1/2 with
+  // the others (docs/coupling.md, Stability).
+  const double limit = assembly_.integrator == dem::Integrator::euler ? 1.0 : 0.5;
+  const double rho = lattice_->params().def.density;
+  int first = -1, count = 0;
+  double feedback = 0;
+  for (int s = 0; s < b.size(); ++s) {
+    if (b.ghost[s] || b.shape[s]->type() == dem::ShapeType::wall) continue;
+    // r is at most rho A / m (B <= eps), a quarter more for the stair-step
+    // and subcell ratios: most elements are heavier and need no sum.
+    if (1.25 * rho * b.shape[s]->area() < limit * b.mass[s]) continue;
+    const double r = coupler_.explicitFeedback(*lattice_, b, s);
+    if (!(r >= limit) || count++ > 0) continue;
+    first = s, feedback = r;
+  }
+  if (count == 0) return;
+  warn("element " + std::to_string(b.id[first]) +
+       (count > 1 ? " (and " + std::to_string(count - 1) + " more)" : "") + ", of density " +
+       rounded(b.mass[first] / (b.shape[first]->area() * rho), 3) + " times the fluid's, is " +
+       std::string(kLightMarker) + ": the fluid inside it feeds back " + rounded(feedback, 3) +
+       " of its motion each step, at or over the limit " + formatNumber(limit) +
+       ", so its velocity will flip sign from step to step and grow: use \"sim configure "
+       "-coupling implicit\" (stable at any density)");
 }
 
 void Manager::deleteLattice() {
@@ -113,7 +200,8 @@ void Manager::setThreads(int threads) {
 
 // Covers the lattice for this step and checks what the fluid will see: a solid
 // surface faster than the Mach limit stops the step before anything changes;
-// one above the warning limit, or an element spanning under two cells, warns.
+// one above the warning limit, an element spanning under two cells, and what
+// checkCoverage finds, warn.
 void Manager::coupleBeforeFluid() {
   coupler_.prepare(*lattice_, assembly_, coupling_, gravity_, threads_);
   const coupling::SolidSpeed& fast = coupler_.fastest();
@@ -140,6 +228,7 @@ void Manager::coupleBeforeFluid() {
          " across, under two lattice cells (h = " + formatNumber(h) +
          "): the fluid does not resolve it");
   }
+  checkCoverage();
 }
 
 void Manager::stepElements(double dt) {
@@ -174,6 +263,7 @@ void Manager::step() {
   using Clock = std::chrono::steady_clock;
   auto t0 = Clock::now();
   if (lattice_) {
+    checkCollision();
     const bool couple = coupling::Coupler::needed(*lattice_, assembly_);
     try {
       if (couple) {
@@ -234,6 +324,11 @@ void Manager::reset() {
 void Manager::warn(const std::string& message) {
   pendingWarnings_.push_back(message);
   warningLog_.push_back(message);
+}
+
+bool Manager::warned(std::string_view marker) const {
+  return std::any_of(warningLog_.begin(), warningLog_.end(),
+                     [&](const std::string& w) { return w.find(marker) != std::string::npos; });
 }
 
 std::vector<std::string> Manager::takeWarnings() {

@@ -35,6 +35,15 @@ struct SolidSpeed {
   int obstacle = -1;  // or its obstacle id
 };
 
+// The solids that met their own periodic image in the last `prepare`
+// (selfOverlap): the first, by element or obstacle id, and how many.
+struct SelfOverlap {
+  int element = -1;   // its element id, or -1
+  int obstacle = -1;  // or its obstacle id
+  int axes = 0;       // selfOverlap's bits: 1 x, 2 y
+  int count = 0;
+};
+
 struct CouplingTimes {
   double coverage = 0, forces = 0;  // seconds, accumulated
   // coverage = measure (the solids' cells and ratios) + sort (pieces in node
@@ -59,6 +68,13 @@ class Coupler {
   void clear(dem::Assembly& assembly);
 
   const SolidSpeed& fastest() const { return fastest_; }
+  const SelfOverlap& selfOverlapping() const { return overlap_; }
+  // The explicit coupling's one-step feedback on element slot s as the last
+  // `prepare` covered it (docs/coupling.md, Stability): r = rho_f A_int / m,
+  // A_int the sum of B h^2 over its cells (the implicit solve's gain), or the
+  // same with each cell's arm squared over its moment of inertia, the larger
+  // of the two over its free degrees of freedom. 0 when held or uncovered.
+  double explicitFeedback(const lb::Lattice& lattice, const dem::Bodies& b, int s) const;
   std::size_t coveredCells() const { return cells_; }
   const CouplingTimes& times() const { return times_; }
 
@@ -76,6 +92,7 @@ class Coupler {
     bool outside = false;
     CellCovers cells;
     std::vector<Run> runs;
+    int overlap = 0;  // selfOverlap of its footprint
   };
   // A piece is one solid's share of one cell: its global index g numbers the
   // solids' cells solid by solid (elements, then circles), pieceStart_[o] + m
@@ -167,6 +184,7 @@ class Coupler {
   Settings measuredWith_;
   std::size_t cells_ = 0;
   SolidSpeed fastest_;
+  SelfOverlap overlap_;
   CouplingTimes times_;
 };
 

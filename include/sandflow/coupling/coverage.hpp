@@ -91,4 +91,10 @@ using CellCovers = std::vector<CellCover, UnsetAllocator<CellCover>>;
 void cover(const Footprint& f, const Vec2& reference, const Grid& grid, int subcells,
            CellCovers& out);
 
+// The periodic axes (1: x, 2: y, 3: both) along which the footprint's box
+// spans more cells than the lattice has: there the solid meets its own
+// periodic image, which `cover` clips away rather than adds, so the cells of
+// the overlap get wrong ratios (some deep inside get none). 0 when it fits.
+int selfOverlap(const Footprint& f, const Grid& grid);
+
 }  // namespace sf::coupling

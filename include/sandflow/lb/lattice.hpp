@@ -83,6 +83,9 @@ class Lattice {
   int addCircle(const CircleObstacle& circle);  // circle.id < 0: next free id
   void deleteObstacle(int id);
   std::vector<int> obstacleIds() const;
+  // True when a no-slip side, a no-slip rect or a circular wall bounds the
+  // fluid: what BGK's tau-dependent wall position spoils (docs/lattice.md).
+  bool hasNoSlipSurfaces() const;
   ObstacleInfo obstacleInfo(int id) const;  // throws if unknown
   const std::vector<CircleObstacle>& circles() const { return circles_; }
   void setCircleLoad(std::size_t index, const Vec2& force, double torque, std::size_t cells);

@@ -4,10 +4,10 @@
 // needs: no lattice, no fluid pass; no elements, no DEM pass.
 #include <memory>
 #include <optional>
-#include <string>
-#include <vector>
-
 #include <set>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "sandflow/coupling/coupler.hpp"
 #include "sandflow/dem/assembly.hpp"
@@ -65,6 +65,9 @@ class Manager {
   // Clears the scene (lattice, time, settings) but keeps the thread count.
   void reset();
 
+  // Above this tau, BGK's bounce-back walls slip by over 5% of a 16-cell
+  // channel's speed (docs/stability.md); TRT's magic walls do not.
+  static constexpr double kBgkTauLimit = 2.0;
   double machWarnLimit() const { return 0.1; }
   double machStopLimit() const { return 0.3; }
   // Warnings raised since the last call (each kind once per lattice).
@@ -94,6 +97,15 @@ class Manager {
 
  private:
   void warn(const std::string& message);
+  // Whether a warning holding `marker` was given since the last reset. The
+  // warnings below are given once a run this way: the log is in the
+  // checkpoint, so a continued run gives the same ones.
+  bool warned(std::string_view marker) const;
+  // BGK with tau past kBgkTauLimit along no-slip walls: the walls slip.
+  void checkCollision();
+  // Elements that the explicit coupling drives unstable, or that meet their
+  // own periodic image (after the coupler's prepare).
+  void checkCoverage();
 
   void checkDemTimestep(double dt) const;
   void coupleBeforeFluid();
