@@ -519,7 +519,28 @@ void Assembly::checkSpeeds(double dt) const {
   const double *w = b.w.data(), *torque = b.torque.data(), *mass = b.mass.data(),
                *inertia = b.inertia.data(), *reach = b.reach.data(), *extent = b.extent.data();
   for (int s = 0; s < b.size(); ++s) {
-    if (!touching[s] || (b.invMass[s] == 0 && b.invInertia[s] == 0)) continue;
+    if (b.invMass[s] == 0 && b.invInertia[s] == 0) continue;
+    if (!touching[s]) {
+      // Free flight may be fast, but not beyond what a double holds (a
+      // force of -1e308 on a light disc): refused before anything moves.
+      // (as the integrators do: the acceleration first, which may overflow)
+      const Vec2 a = force[s] / mass[s];
+      const double alpha = torque[s] / inertia[s];
+      Vec2 vFree = v[s] + dt * a;
+      double wFree = w[s] + dt * alpha;
+      if (b.hold[s] & holdX) vFree.x() = 0;
+      if (b.hold[s] & holdY) vFree.y() = 0;
+      if (b.hold[s] & holdRotation) wFree = 0;
+      if (!vFree.allFinite() || !std::isfinite(wFree) || !(b.x[s] + dt * vFree).allFinite() ||
+          !std::isfinite(b.angle[s] + dt * wFree))
+        throw Error("UNSTABLE NAN", "element " + std::to_string(b.id[s]) +
+                                        " would reach a position or velocity that is not finite "
+                                        "(its force {" +
+                                        formatNumber(force[s].x()) + " " +
+                                        formatNumber(force[s].y()) + "} on mass " +
+                                        formatNumber(mass[s]) + ")");
+      continue;
+    }
     const Vec2 vNext = v[s] + dt * force[s] / mass[s];
     const double wNext = std::abs(w[s] + dt * torque[s] / inertia[s]);
     const double size = extent[s];
