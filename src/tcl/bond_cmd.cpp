@@ -7,7 +7,6 @@
 namespace sf::tcl {
 namespace {
 
-
 const OptionSpec kCreateOptions[] = {
     {"-stiffness", "k", "bond stiffness (default: the materials' -bondstiffness, the smaller)"},
     {"-strength", "s", "tensile strength (default: the materials' -bondstrength, the smaller)"},

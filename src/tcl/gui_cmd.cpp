@@ -14,7 +14,6 @@
 namespace sf::tcl {
 namespace {
 
-
 // The view options of a GUI frame: `view configure`'s, at the widget's size,
 // over the world window the user panned and zoomed to ({} for the automatic one).
 bool frameOptions(Tcl_Interp* interp, const Session& s, Tcl_Obj* const objv[],

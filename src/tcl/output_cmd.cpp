@@ -10,7 +10,6 @@
 namespace sf::tcl {
 namespace {
 
-
 // output list -> {FILE {kind csv|record|movie|vtk every K written N} ...}
 int OutputList(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {

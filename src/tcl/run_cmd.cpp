@@ -10,7 +10,6 @@
 namespace sf::tcl {
 namespace {
 
-
 const OptionSpec kRunOptions[] = {
     {"-every", "K script", "evaluate script every K steps; break stops the run"},
     {nullptr, nullptr, nullptr}};

@@ -5,7 +5,6 @@
 namespace sf::tcl {
 namespace {
 
-
 const OptionSpec kOptions[] = {
     {"-acceleration", "{ax ay}", "body acceleration of each clone (default {0 0})"},
     {"-interval", "t", "least time between two clones (default 0)"},
