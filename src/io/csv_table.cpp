@@ -9,12 +9,6 @@
 namespace sf::io {
 namespace {
 
-std::string trim(const std::string& s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return "";
-  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
-}
-
 std::vector<std::string> splitFields(const std::string& line) {
   std::vector<std::string> fields;
   std::size_t start = 0;
@@ -40,6 +34,12 @@ std::string badColumn(const std::string& name, const std::vector<std::string>& n
 }
 
 }  // namespace
+
+std::string trim(const std::string& s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return "";
+  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
+}
 
 CsvTable readCsv(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

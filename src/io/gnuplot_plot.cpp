@@ -11,17 +11,12 @@
 #include <map>
 
 #include "sandflow/core/error.hpp"
+#include "sandflow/io/csv_table.hpp"
 #include "sandflow/io/gnuplot.hpp"
 #include "sandflow/io/run_program.hpp"
 
 namespace sf::io {
 namespace {
-
-std::string trim(const std::string& s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return "";
-  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
-}
 
 // A new, empty file beside `out` (same folder, so that rename is atomic).
 std::string makeTemporary(const std::string& out) {

@@ -31,24 +31,11 @@ struct LatticeStage {
   }
 };
 
-OptionValue real(double v) {
-  return {.real = v};
-}
-OptionValue integer(int v) {
-  return {.integer = v};
-}
-OptionValue vec(const Vec2& v) {
-  return {.vec = v};
-}
-OptionValue choice(int v) {
-  return {.choice = v};
-}
-
 using Row = Option<LatticeStage>;
 // In this order: -periodic is applied before -walls.
 const OptionTable<LatticeStage> kOptions{
     {Row{{"-origin", "{x0 y0}", "lower-left corner", ValueKind::vec2, "length"},
-         [](const LatticeStage& s) { return vec(s.def.origin); },
+         [](const LatticeStage& s) { return vecValue(s.def.origin); },
          [](LatticeStage& s, const OptionValue& v) { s.def.origin = v.vec; }},
      Row{{"-size",
           "{Lx Ly}",
@@ -60,7 +47,7 @@ const OptionTable<LatticeStage> kOptions{
           nullptr,
           nullptr,
           ""},
-         [](const LatticeStage& s) { return vec(s.def.size); },
+         [](const LatticeStage& s) { return vecValue(s.def.size); },
          [](LatticeStage& s, const OptionValue& v) { s.def.size = v.vec; }},
      Row{{"-cells",
           "NX",
@@ -72,7 +59,7 @@ const OptionTable<LatticeStage> kOptions{
           nullptr,
           nullptr,
           ""},
-         [](const LatticeStage& s) { return integer(s.nx); },
+         [](const LatticeStage& s) { return integerValue(s.nx); },
          [](LatticeStage& s, const OptionValue& v) { s.def.cells = v.integer, s.def.spacing = 0; }},
      Row{{"-spacing",
           "h",
@@ -84,7 +71,7 @@ const OptionTable<LatticeStage> kOptions{
           nullptr,
           nullptr,
           ""},
-         [](const LatticeStage& s) { return real(s.h); },
+         [](const LatticeStage& s) { return realValue(s.h); },
          [](LatticeStage& s, const OptionValue& v) { s.def.spacing = v.real, s.def.cells = 0; }},
      Row{{"-viscosity",
           "nu",
@@ -96,10 +83,10 @@ const OptionTable<LatticeStage> kOptions{
           nullptr,
           nullptr,
           ""},
-         [](const LatticeStage& s) { return real(s.viscosity); },
+         [](const LatticeStage& s) { return realValue(s.viscosity); },
          [](LatticeStage& s, const OptionValue& v) { s.def.viscosity = v.real; }},
      Row{{"-density", "rho0", "initial and reference density", ValueKind::real, "mass/length^2"},
-         [](const LatticeStage& s) { return real(s.def.density); },
+         [](const LatticeStage& s) { return realValue(s.def.density); },
          [](LatticeStage& s, const OptionValue& v) { s.def.density = v.real; }},
      Row{{"-tau",
           "tau",
@@ -111,7 +98,7 @@ const OptionTable<LatticeStage> kOptions{
           nullptr,
           [](double tau) { return "tau " + formatNumber(tau) + " is unstable: must exceed 0.5"; },
           "1"},
-         [](const LatticeStage& s) { return real(s.tau); },
+         [](const LatticeStage& s) { return realValue(s.tau); },
          [](LatticeStage& s, const OptionValue& v) { s.def.tau = v.real; }},
      Row{{"-periodic", "{x y}", "periodic axes: two booleans, or axis names", ValueKind::custom},
          nullptr,
@@ -137,7 +124,7 @@ const OptionTable<LatticeStage> kOptions{
          [](const LatticeStage& s) { return wallsValue(s.def); }},
      Row{{"-forcing", "{Fx Fy}", "body force per unit area (rho a)", ValueKind::vec2,
           "mass/(length time^2)"},
-         [](const LatticeStage& s) { return vec(s.def.forcing); },
+         [](const LatticeStage& s) { return vecValue(s.def.forcing); },
          [](LatticeStage& s, const OptionValue& v) { s.def.forcing = v.vec; }},
      Row{{"-collision",
           "bgk|trt",
@@ -147,7 +134,7 @@ const OptionTable<LatticeStage> kOptions{
           {},
           kCollisionNames,
           "collision"},
-         [](const LatticeStage& s) { return choice(int(s.def.collision)); },
+         [](const LatticeStage& s) { return choiceValue(int(s.def.collision)); },
          [](LatticeStage& s, const OptionValue& v) { s.def.collision = lb::Collision(v.choice); }},
      Row{{"-forcescheme",
           "nodal|guo",
@@ -157,12 +144,12 @@ const OptionTable<LatticeStage> kOptions{
           {},
           kForceSchemeNames,
           "force scheme"},
-         [](const LatticeStage& s) { return choice(int(s.def.forceScheme)); },
+         [](const LatticeStage& s) { return choiceValue(int(s.def.forceScheme)); },
          [](LatticeStage& s, const OptionValue& v) {
            s.def.forceScheme = lb::ForceScheme(v.choice);
          }},
      Row{{"-magic", "Lambda", "TRT magic parameter (0.1875: walls exactly halfway)"},
-         [](const LatticeStage& s) { return real(s.def.magic); },
+         [](const LatticeStage& s) { return realValue(s.def.magic); },
          [](LatticeStage& s, const OptionValue& v) { s.def.magic = v.real; }}},
     true};
 enum { kSize = 1, kCells, kSpacing, kViscosity, kDensity, kTau };

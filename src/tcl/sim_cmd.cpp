@@ -31,22 +31,6 @@ struct SimStage {
   }
 };
 
-OptionValue real(double v) {
-  return {.real = v};
-}
-OptionValue integer(int v) {
-  return {.integer = v};
-}
-OptionValue boolean(bool v) {
-  return {.boolean = v};
-}
-OptionValue vec(const Vec2& v) {
-  return {.vec = v};
-}
-OptionValue choice(int v) {
-  return {.choice = v};
-}
-
 int solidRatioChoice(int subcells) {
   for (int i = 0; kSolidRatioNames[i]; ++i)
     if (kSolidRatioSubcells[i] == subcells) return i;
@@ -61,7 +45,7 @@ const OptionTable<SimStage> kOptions{
          ValueKind::real,
          "time",
          {.min = 0, .minOpen = true}},
-        [](const SimStage& s) { return real(s.timestep); },
+        [](const SimStage& s) { return realValue(s.timestep); },
         [](SimStage& s, const OptionValue& v) { s.timestep = v.real; }},
     Row{{"-threads",
          "n",
@@ -69,11 +53,11 @@ const OptionTable<SimStage> kOptions{
          ValueKind::integer,
          "",
          {.min = 1, .max = sim::Manager::kMaxThreads}},
-        [](const SimStage& s) { return integer(s.threads); },
+        [](const SimStage& s) { return integerValue(s.threads); },
         [](SimStage& s, const OptionValue& v) { s.threads = v.integer; }},
     Row{{"-gravity", "{gx gy}", "gravitational acceleration on the elements", ValueKind::vec2,
          "length/time^2"},
-        [](const SimStage& s) { return vec(s.gravity); },
+        [](const SimStage& s) { return vecValue(s.gravity); },
         [](SimStage& s, const OptionValue& v) { s.gravity = v.vec; }},
     Row{{"-integrator",
          "central|euler|verlet",
@@ -83,7 +67,7 @@ const OptionTable<SimStage> kOptions{
          "",
          {},
          dem::integratorNames},
-        [](const SimStage& s) { return choice(s.integrator); },
+        [](const SimStage& s) { return choiceValue(s.integrator); },
         [](SimStage& s, const OptionValue& v) { s.integrator = v.choice; }},
     Row{{"-maxoverlap",
          "f",
@@ -91,7 +75,7 @@ const OptionTable<SimStage> kOptions{
          ValueKind::real,
          "",
          {.min = 0, .max = 2, .minOpen = true}},
-        [](const SimStage& s) { return real(s.maxOverlap); },
+        [](const SimStage& s) { return realValue(s.maxOverlap); },
         [](SimStage& s, const OptionValue& v) { s.maxOverlap = v.real; }},
     Row{{"-solidratio",
          "exact|1|2|4|8",
@@ -102,7 +86,7 @@ const OptionTable<SimStage> kOptions{
          {},
          kSolidRatioNames,
          "solid ratio"},
-        [](const SimStage& s) { return choice(solidRatioChoice(s.coupled.subcells)); },
+        [](const SimStage& s) { return choiceValue(solidRatioChoice(s.coupled.subcells)); },
         [](SimStage& s, const OptionValue& v) {
           s.coupled.subcells = kSolidRatioSubcells[v.choice];
         }},
@@ -112,11 +96,11 @@ const OptionTable<SimStage> kOptions{
          ValueKind::integer,
          "",
          {.min = 1, .max = 1000}},
-        [](const SimStage& s) { return integer(s.substeps); },
+        [](const SimStage& s) { return integerValue(s.substeps); },
         [](SimStage& s, const OptionValue& v) { s.substeps = v.integer; }},
     Row{{"-buoyancy", "0|1", "static buoyancy -rho_f A g on elements in the fluid",
          ValueKind::boolean},
-        [](const SimStage& s) { return boolean(s.coupled.buoyancy); },
+        [](const SimStage& s) { return booleanValue(s.coupled.buoyancy); },
         [](SimStage& s, const OptionValue& v) { s.coupled.buoyancy = v.boolean; }},
     Row{{"-share",
          "coverage|equal",
@@ -125,7 +109,7 @@ const OptionTable<SimStage> kOptions{
          "",
          {},
          coupling::shareNames},
-        [](const SimStage& s) { return choice(int(s.coupled.share)); },
+        [](const SimStage& s) { return choiceValue(int(s.coupled.share)); },
         [](SimStage& s, const OptionValue& v) { s.coupled.share = coupling::Share(v.choice); }},
     Row{{"-interior",
          "equilibrium|collide",
@@ -135,7 +119,7 @@ const OptionTable<SimStage> kOptions{
          "",
          {},
          kInteriorNames},
-        [](const SimStage& s) { return choice(s.coupled.equilibriumInterior ? 0 : 1); },
+        [](const SimStage& s) { return choiceValue(s.coupled.equilibriumInterior ? 0 : 1); },
         [](SimStage& s, const OptionValue& v) { s.coupled.equilibriumInterior = v.choice == 0; }},
     Row{{"-coupling",
          "explicit|implicit",
@@ -145,7 +129,7 @@ const OptionTable<SimStage> kOptions{
          "",
          {},
          kCouplingNames},
-        [](const SimStage& s) { return choice(s.coupled.implicit ? 1 : 0); },
+        [](const SimStage& s) { return choiceValue(s.coupled.implicit ? 1 : 0); },
         [](SimStage& s, const OptionValue& v) { s.coupled.implicit = v.choice == 1; }},
 };
 enum { kTimestep = 0, kThreads, kGravity, kIntegrator, kMaxOverlap, kSolidRatio, kSubsteps };

@@ -82,14 +82,10 @@ struct ViewStage {
   bool withOffscreen = false;  // view configure only
 };
 
-OptionValue boolean(bool b) {
-  return {.boolean = b};
-}
-
 // A boolean row of the view.
 Option<ViewStage> flag(const char* name, const char* help, bool render::ViewOptions::*field) {
   return {{name, "0|1", help, ValueKind::boolean},
-          [field](const ViewStage& s) { return boolean(s.v.*field); },
+          [field](const ViewStage& s) { return booleanValue(s.v.*field); },
           [field](ViewStage& s, const OptionValue& x) { s.v.*field = x.boolean; }};
 }
 

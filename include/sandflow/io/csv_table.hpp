@@ -8,6 +8,9 @@
 
 namespace sf::io {
 
+// s without leading and trailing blanks, tabs and carriage returns.
+std::string trim(const std::string& s);
+
 struct CsvTable {
   std::vector<std::string> names;              // the header
   std::vector<std::vector<std::string>> rows;  // each as many fields as names, trimmed

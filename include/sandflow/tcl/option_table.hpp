@@ -34,6 +34,23 @@ struct OptionValue {
   bool empty = false;  // {} given where the row allows it (OptionInfo::orEmpty)
 };
 
+// A value of each kind, for the rows' getters.
+inline OptionValue realValue(double v) {
+  return {.real = v};
+}
+inline OptionValue integerValue(int v) {
+  return {.integer = v};
+}
+inline OptionValue booleanValue(bool v) {
+  return {.boolean = v};
+}
+inline OptionValue vecValue(const Vec2& v) {
+  return {.vec = v};
+}
+inline OptionValue choiceValue(int v) {
+  return {.choice = v};
+}
+
 // What a row says about its option, whatever it configures.
 struct OptionInfo {
   const char* name;      // "-timestep"
