@@ -429,6 +429,7 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
   const detail::ContactInputs in{b.x.data(),   b.angle.data(), b.reach.data(), vel.data(),
                                  omega.data(), b.shape.data(), laws_.data(),   dt,
                                  maxOverlap};
+  prepareDamping(dt);  // each contact's damping and normal-force mode (law_columns.cpp)
   const detail::LawColumns lawColumns{lawKn_.data(), lawKs_.data(), lawFriction_.data()};
   ContactList& l = list_;
   const std::size_t nc = l.size(), nv = l.vectorCount;

@@ -8,8 +8,10 @@
 namespace sf::dem {
 namespace {
 
+// The law and, in the next byte, the normal-force mode (0, signed, in files
+// written before there was one).
 void putMaterial(ByteWriter& out, const Material& m) {
-  out.put(m.name), out.put(std::int32_t(m.law));
+  out.put(m.name), out.put(std::int32_t(m.law) | std::int32_t(m.normalForce) << 8);
   for (double v : {m.density, m.kn, m.ks, m.friction, m.restitution, m.damping, m.bondStiffness,
                    m.bondStrength, m.youngs, m.poisson})
     out.put(v);
@@ -19,8 +21,10 @@ Material getMaterial(ByteReader& in) {
   Material m;
   in.get(m.name, "material name");
   const auto law = in.get<std::int32_t>("material");
-  if (law < 0 || law > 1) ByteReader::fail("it holds an unknown contact law");
-  m.law = ContactLaw(law);
+  if ((law & 0xff) > 1 || (law >> 8) < 0 || (law >> 8) > 1)
+    ByteReader::fail("it holds an unknown contact law");
+  m.law = ContactLaw(law & 0xff);
+  m.normalForce = NormalForce(law >> 8);
   for (double* v : {&m.density, &m.kn, &m.ks, &m.friction, &m.restitution, &m.damping,
                     &m.bondStiffness, &m.bondStrength, &m.youngs, &m.poisson})
     *v = in.get<double>("material");

@@ -14,6 +14,8 @@ std::size_t linearDiscContacts(ContactList& l, std::size_t begin, std::size_t en
   const double* __restrict w = in.w;
   const double* __restrict r = in.reach;
   const double* __restrict kn = laws.kn, * __restrict ks = laws.ks, * __restrict friction = laws.friction;
+  const double* __restrict normalFloor = l.normalFloor.data();
+  const std::int32_t* __restrict spanned = l.spanned.data();
   const int* __restrict pa = l.a.data(), * __restrict pb = l.b.data(), * __restrict law = l.law.data();
   const double* __restrict dampingPart = l.dampingPart.data();
   const ContactHistory& h = l.history[l.current];
@@ -28,7 +30,7 @@ std::size_t linearDiscContacts(ContactList& l, std::size_t begin, std::size_t en
                      *__restrict overlapOut = l.overlap.data(), *__restrict taOut = l.ta.data(),
                      *__restrict tbOut = l.tb.data();
   const double* __restrict minSize = l.minSize.data();
-  const double dt = in.dt, maxOverlap = in.maxOverlap;
+  const double dt = in.dt, invDt = 1.0 / in.dt, maxOverlap = in.maxOverlap;
   std::size_t first = end;
 #pragma omp simd reduction(min : first)
   for (std::size_t k = begin; k < end; ++k) {
@@ -49,7 +51,7 @@ std::size_t linearDiscContacts(ContactList& l, std::size_t begin, std::size_t en
     c.vjx = v[2 * j], c.vjy = v[2 * j + 1], c.wj = w[j];
     const int lk = law[k];
     c.kn = kn[lk], c.ks = ks[lk], c.friction = friction[lk], c.dampingPart = dampingPart[k],
-    c.dt = dt;
+    c.dt = dt, c.invDt = invDt, c.normalFloor = normalFloor[k], c.spanned = spanned[k] != 0;
     c.hertz = false, c.radius = 0, c.youngs = 0, c.shearModulus = 0, c.fixedDamping = true;
     c.touching = touching[k] != 0;
     c.onx = onx[k], c.ony = ony[k], c.osx = osx[k], c.osy = osy[k];

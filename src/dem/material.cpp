@@ -54,6 +54,14 @@ PairLaw combine(const Material& a, const Material& b) {
   law.friction = std::min(a.friction, b.friction);
   law.zeta = 0.5 * (dampingRatio(a.restitution) + dampingRatio(b.restitution));
   law.damping = (a.damping >= 0 && b.damping >= 0) ? 0.5 * (a.damping + b.damping) : -1.0;
+  // The pair's target restitution: the continuous linear law's at the mean
+  // ratio (equal materials keep theirs); contact_damping.hpp solves for it.
+  const double z = law.zeta;
+  law.restitution = a.restitution == b.restitution ? a.restitution
+                    : z < 1 ? std::exp(-std::numbers::pi * z / std::sqrt(1 - z * z))
+                            : 0.0;
+  law.compressive =
+      a.normalForce == NormalForce::compressive || b.normalForce == NormalForce::compressive;
   law.hertz = a.law == ContactLaw::hertz || b.law == ContactLaw::hertz;
   law.effectiveYoungs =
       1.0 / ((1 - a.poisson * a.poisson) / a.youngs + (1 - b.poisson * b.poisson) / b.youngs);

@@ -12,6 +12,7 @@ enum Opt {
   kFriction,
   kRestitution,
   kDamping,
+  kNormalForce,
   kBondStiffness,
   kBondStrength,
   kLaw,
@@ -26,13 +27,14 @@ const OptionSpec kOptions[] = {
     {"-friction", "mu", "Coulomb friction coefficient"},
     {"-restitution", "e", "target normal restitution, 0..1 (sets the damping)"},
     {"-damping", "c", "fixed normal damping coefficient instead of -restitution"},
+    {"-normalforce", "signed|compressive",
+     "signed: the dashpot may pull as a contact opens; compressive: clamped at 0"},
     {"-bondstiffness", "k", "stiffness of bonds made of this material"},
     {"-bondstrength", "s", "force at which such bonds break"},
     {"-law", "linear|hertz", "contact law: linear spring-dashpot (default) or Hertz-Mindlin"},
     {"-youngs", "E", "Young's modulus (Hertz-Mindlin)"},
     {"-poisson", "nu", "Poisson's ratio (Hertz-Mindlin)"},
     {nullptr, nullptr, nullptr}};
-
 
 Tcl_Obj* optionValue(const dem::Material& m, int k) {
   switch (k) {
@@ -48,6 +50,8 @@ Tcl_Obj* optionValue(const dem::Material& m, int k) {
       return newDouble(m.restitution);
     case kDamping:
       return m.damping >= 0 ? newDouble(m.damping) : Tcl_NewObj();
+    case kNormalForce:
+      return Tcl_NewStringObj(dem::normalForceNames[int(m.normalForce)], -1);
     case kBondStiffness:
       return newDouble(m.bondStiffness);
     case kBondStrength:
@@ -68,6 +72,12 @@ bool applyOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first
       int law = 0;
       if (!getChoice(interp, v, "law", dem::contactLawNames, law)) return false;
       m.law = static_cast<dem::ContactLaw>(law);
+      return true;
+    }
+    if (k == kNormalForce) {
+      int mode = 0;
+      if (!getChoice(interp, v, "normalforce", dem::normalForceNames, mode)) return false;
+      m.normalForce = static_cast<dem::NormalForce>(mode);
       return true;
     }
     double d = 0;

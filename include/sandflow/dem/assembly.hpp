@@ -10,6 +10,7 @@
 #include "sandflow/core/byte_stream.hpp"
 #include "sandflow/dem/bodies.hpp"
 #include "sandflow/dem/bond.hpp"
+#include "sandflow/dem/contact_damping.hpp"
 #include "sandflow/dem/contact_list.hpp"
 #include "sandflow/dem/dess.hpp"
 #include "sandflow/dem/element_edit.hpp"
@@ -162,6 +163,11 @@ class Assembly {
   void computeForces(double dt, const Vec2& gravity, bool commit);
   // Fills contact k's cached law, damping part, size and radius.
   void prepareContact(ContactList& l, std::size_t k) const;
+  // Contact k's damping part at the step dampingDt_ (see ContactList), and
+  // every contact's damping part and normal-force mode for the step dt, done
+  // again only after a pair build or a change of step (law_columns.cpp).
+  double dampingPart(const ContactList& l, std::size_t k) const;
+  void prepareDamping(double dt);
   // Whether the pair-law table or the contacts' caches are out of date (the
   // pair list is then built again).
   bool lawsStale() const;
@@ -218,6 +224,13 @@ class Assembly {
   std::uint64_t platesAt_ = 0;
   std::vector<PairLaw> laws_;                        // material pairs, i * materials + j
   std::vector<double> lawKn_, lawKs_, lawFriction_;  // the same in columns
+  // The damping solved for each restitution and step (contact_damping.hpp),
+  // and the step, pair build, masses and materials the contacts' damping
+  // parts hold for (dampingDt_ 0: none yet).
+  mutable DampingRatios dampingRatios_;
+  double dampingDt_ = 0;
+  long long dampingBuild_ = -1;
+  std::uint64_t dampingGeneration_ = 0, dampingMaterials_ = 0;
   std::uint64_t generation_ = 1;  // bumped by every change to masses, holds or the element set
   mutable std::uint64_t criticalAt_ = 0;
   mutable std::uint64_t criticalMaterials_ = 0;  // materials_.version() then

@@ -7,6 +7,11 @@ namespace sf::dem {
 
 enum class ContactLaw { linear = 0, hertz = 1 };
 inline constexpr const char* contactLawNames[] = {"linear", "hertz", nullptr};
+// The normal force as spring and dashpot give it, pulling for a moment as a
+// contact opens (LAMMPS gran/hooke), or clamped at 0: then the friction's
+// impulse in sliding is exactly mu times the normal one (docs/dem.md).
+enum class NormalForce { signedForce = 0, compressive = 1 };
+inline constexpr const char* normalForceNames[] = {"signed", "compressive", nullptr};
 
 struct Material {
   std::string name;
@@ -17,6 +22,7 @@ struct Material {
   double friction = 0.5;     // Coulomb coefficient
   double restitution = 0.5;  // target normal restitution (sets the damping ratio) ...
   double damping = -1.0;     // ... or a fixed normal damping coefficient when >= 0
+  NormalForce normalForce = NormalForce::signedForce;
   double bondStiffness = 1e5;
   double bondStrength = 1e3;
   double youngs = 70e9;  // Hertz-Mindlin: Young's modulus ...
@@ -32,13 +38,16 @@ double dampingRatio(double restitution);
 
 // Parameters of the contact between two materials: stiffnesses combine in
 // series scaled so that equal materials keep their own value (2 k1 k2/(k1+k2)),
-// friction takes the smaller, damping ratios the mean.
+// friction takes the smaller, damping ratios the mean (restitution: the one
+// the continuous linear law gives that mean; equal materials keep theirs), the
+// normal force is compressive if either material's is.
 // Hertz-Mindlin (either material hertz) uses the sphere law that 2D codes
 // such as LAMMPS use: Fn = 4/3 E* sqrt(R* d) d, tangential stiffness
 // 8 G* sqrt(R* d), with the effective moduli below.
 struct PairLaw {
-  double kn, ks, friction, zeta, damping;  // damping < 0: use zeta
-  bool hertz = false;
+  double kn, ks, friction, zeta, damping;  // damping < 0: use restitution
+  double restitution = 0;                  // the target the damping is solved for
+  bool hertz = false, compressive = false;
   double effectiveYoungs = 0, effectiveShear = 0;
 };
 PairLaw combine(const Material& a, const Material& b);
