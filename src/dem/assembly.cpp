@@ -177,19 +177,14 @@ double Assembly::effectiveRadius(int a, int b) const {
 double Assembly::criticalTimestep() const {
   if (criticalAt_ != generation_ || criticalMaterials_ != materials_.version())
     criticalAt_ = generation_, criticalMaterials_ = materials_.version(),
-    critical_ = measureCriticalTimestep();
+    critical_ = measureCriticalTimestep(), limits_ = measureTimestepLimits(critical_);
   return critical_;
 }
 
 double Assembly::measureCriticalTimestep() const {
   double mMin = std::numeric_limits<double>::infinity(), kMax = 0.0;
   for (int s = 0; s < bodies_.size(); ++s) {
-    const Material& m = materials_[bodies_.material[s]];
-    // Hertz: the stiffness at an overlap of 1% of the element's size.
-    const double r = curvatureRadius(s);
-    kMax = std::max(kMax, m.law == ContactLaw::hertz && std::isfinite(r)
-                              ? 8.0 * m.youngs / (2 * (1 + m.poisson)) * std::sqrt(r * 0.01 * r)
-                              : std::max(m.kn, m.ks));
+    kMax = std::max(kMax, stiffestContact(s));
     // Sources count: their clones will be free.
     if (bodies_.invMass[s] > 0 || bodies_.ghost[s]) mMin = std::min(mMin, bodies_.mass[s]);
   }

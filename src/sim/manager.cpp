@@ -24,6 +24,8 @@ std::string rounded(double value, int digits) {
 constexpr std::string_view kBgkMarker = "use \"-collision trt\"";
 constexpr std::string_view kLightMarker = "too light for the explicit coupling";
 constexpr std::string_view kOverlapMarker = "its own periodic image";
+constexpr std::string_view kCellReynoldsMarker = "cell Reynolds number";
+constexpr std::string_view kDemStepMarker = "over its accurate step";
 
 }  // namespace
 
@@ -167,6 +169,44 @@ void Manager::checkDemTimestep(double dt) const {
                     formatNumber(critical) + " (2 sqrt(m/k), lightest element, stiffest material)");
 }
 
+// Over the accurate step, impacts rebound off their set restitution (by
+// 20% or more at twice it, docs/stability.md) and can gain energy; over the
+// stable step a lasting contact grows. The critical step (refused above) is
+// the undamped single element's, so both can lie under it.
+void Manager::checkDemAccuracy(double dt) {
+  const dem::Assembly::TimestepLimits limits = assembly_.timestepLimits();
+  if (!(dt > limits.accurate) || warned(kDemStepMarker)) return;
+  const int more = int(std::ceil(substeps_ * dt / limits.accurate));
+  const bool unstable = dt > limits.stable;
+  warn("the element step " + formatNumber(dt) + " is " + rounded(dt / limits.accurate, 3) +
+       " times " + std::string(kDemStepMarker) + " " + formatNumber(limits.accurate) +
+       " (0.5 sqrt(m*/k), effective mass m* " + formatNumber(limits.effectiveMass) +
+       ", stiffness k " + formatNumber(limits.stiffness) + ")" +
+       (unstable ? " and over its stable step " + formatNumber(limits.stable) +
+                       " (2 sqrt(m*/k) (sqrt(1 + zeta^2) - zeta), damping ratio zeta " +
+                       rounded(limits.zeta, 3) + "): a lasting contact will grow without bound"
+                 : ": a contact spans under 6 steps, so impacts rebound off their set "
+                   "restitution and can gain energy") +
+       "; take " + std::to_string(more) + " element substeps per step, or a timestep " +
+       std::to_string(more) + " times smaller");
+}
+
+// Near tau 0.5 the viscosity is too small for the grid: grid-scale
+// oscillations grow, unseen by the Mach check until the flow is several
+// times faster than anything drives it (docs/stability.md, tau).
+void Manager::checkCellReynolds() {
+  const lb::ResolvedLattice& p = lattice_->params();
+  const double nu = (p.tau - 0.5) / 3;  // lattice units, as the speed
+  const double re = lattice_->lastStepMach() / nu;
+  if (!(re > kCellReynoldsLimit) || warned(kCellReynoldsMarker)) return;
+  warn("the " + std::string(kCellReynoldsMarker) + " u h / nu is " + rounded(re, 3) + " at step " +
+       std::to_string(steps_ + 1) + " (fastest fluid " + formatNumber(lattice_->lastStepMach()) +
+       " of the lattice speed, tau " + rounded(p.tau, 6) + "), over " +
+       formatNumber(kCellReynoldsLimit) +
+       ": with tau this near 0.5 grid-scale oscillations can grow unseen; refine the lattice "
+       "or raise tau (more viscosity or a smaller timestep)");
+}
+
 void Manager::setStepping(std::optional<double> dt, std::optional<int> substeps) {
   const int n = substeps.value_or(substeps_);
   if (n < 1 || n > 1000)
@@ -255,6 +295,7 @@ void Manager::step() {
           "VALUE TIMESTEP",
           "no timestep: the elements are all held; set one with \"sim configure -timestep\"");
     checkDemTimestep(demDt);
+    checkDemAccuracy(demDt);
   }
   auto stamp = [&](const Error& e) {
     return Error(e.code(), "step " + std::to_string(steps_ + 1) +
@@ -284,6 +325,7 @@ void Manager::step() {
            std::to_string(steps_ + 1) + " exceeds " + formatNumber(machWarnLimit()) +
            ": the flow is no longer nearly incompressible (reduce the timestep or the forcing)");
     }
+    checkCellReynolds();
   }
   const auto t1 = Clock::now();
   try {

@@ -238,6 +238,8 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
                        {"warnings", warnings},
                        {"kinetic", newDouble(m.assembly().kineticEnergy())},
                        {"critical", newDouble(m.assembly().criticalTimestep())},
+                       {"stablestep", newDouble(m.assembly().timestepLimits().stable)},
+                       {"accuratestep", newDouble(m.assembly().timestepLimits().accurate)},
                        {"covered", Tcl_NewWideIntObj(Tcl_WideInt(
                                        m.coupled() ? m.lattice().coveredCells().size() : 0))},
                        {"fluidforce", newVec2(fluidForce)},

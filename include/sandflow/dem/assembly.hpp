@@ -106,6 +106,22 @@ class Assembly {
   // material table): the Manager asks before every step.
   double criticalTimestep() const;
   double measureCriticalTimestep() const;  // the same, computed afresh
+  // The steps a scene's contacts bear (docs/stability.md, DEM timestep), all
+  // for the stiffest material in use and m* the lightest contact's effective
+  // mass: m/2 of the lightest free element when two free elements can meet
+  // (m when only one can, against walls and held elements).
+  struct TimestepLimits {
+    double critical;  // criticalTimestep()
+    // 2 sqrt(m*/k) (sqrt(1 + zeta^2) - zeta), zeta the largest damping ratio
+    // in use: above it a lasting contact grows without bound.
+    double stable;
+    // 0.5 sqrt(m*/k): below it a contact spans 6 steps or more and rebounds
+    // at its set restitution (contact_damping.hpp); above it an impact's
+    // rebound depends on where in a step it begins, and can gain energy.
+    double accurate;
+    double effectiveMass, stiffness, zeta;  // m*, k and zeta of the limits
+  };
+  TimestepLimits timestepLimits() const;  // kept like criticalTimestep
   Integrator integrator = Integrator::central;
   double maxOverlap = 0.5;
   int threads = 1;
@@ -176,6 +192,10 @@ class Assembly {
   void servoPlates(double dt);
   void checkSpeeds(double dt) const;
   double curvatureRadius(int slot) const;
+  // The stiffness criticalTimestep takes for a slot's material (Hertz: at an
+  // overlap of 1% of the element's size).
+  double stiffestContact(int slot) const;
+  TimestepLimits measureTimestepLimits(double critical) const;
   double effectiveRadius(int a, int b) const;
   bool overlapsAnything(int slot) const;
   void bondForces(double dt, const std::vector<Vec2>& v, const std::vector<double>& w);
@@ -237,6 +257,7 @@ class Assembly {
   // The contacts' caches (prepareContact) hold for these.
   std::uint64_t lawsAt_ = 0, lawsMaterials_ = 0;
   mutable double critical_ = 0;
+  mutable TimestepLimits limits_{};
   std::vector<char> scratchTouch_;  // per element: in contact this step (computeForces)
   // The step computes its forces into these and swaps them in, so that a
   // step that fails leaves the last step's forces (Verlet kicks with them).

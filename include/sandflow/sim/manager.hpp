@@ -68,6 +68,10 @@ class Manager {
   // Above this tau, BGK's bounce-back walls slip by over 5% of a 16-cell
   // channel's speed (docs/stability.md); TRT's magic walls do not.
   static constexpr double kBgkTauLimit = 2.0;
+  // The cell Reynolds number u h / nu above which a warning is given: a
+  // lid-driven cavity at 0.02 c stays under its lid's speed at 12 (tau
+  // 0.505) and outruns it unseen at 60 (BGK, tau 0.501; docs/stability.md).
+  static constexpr double kCellReynoldsLimit = 20.0;
   double machWarnLimit() const { return 0.1; }
   double machStopLimit() const { return 0.3; }
   // Warnings raised since the last call (each kind once per lattice).
@@ -108,6 +112,8 @@ class Manager {
   void checkCoverage();
 
   void checkDemTimestep(double dt) const;
+  void checkDemAccuracy(double dt);
+  void checkCellReynolds();
   void coupleBeforeFluid();
   void stepElements(double dt);
 
