@@ -51,6 +51,11 @@ int Assembly::add(ElementDef def) {
       !std::isfinite(def.w) || !def.force.allFinite() || !std::isfinite(def.torque) ||
       !def.acceleration.allFinite())
     throw Error("VALUE NUMBER", "element position, velocity and forces must be finite");
+  if (def.shape->type() == ShapeType::disc) {  // a negative radius has an area too
+    const double r = static_cast<const Disc&>(*def.shape).radius();
+    if (!(r > 0))
+      throw Error("VALUE RADIUS", "a disc's radius must be > 0, got " + formatNumber(r));
+  }
   checkMass(*def.shape, materials_[def.material]);
   if (def.id < 0) def.id = nextId();
   if (bodies_.slot(def.id) >= 0)
@@ -115,8 +120,8 @@ void Assembly::updateMass(int s) {
 void Assembly::setPlateStress(int id, double stress) {
   const int s = slot(id);
   if (bodies_.shape[s]->type() != ShapeType::wall)
-    throw Error("VALUE STRESS", "-stress applies to walls only");
-  if (std::isinf(stress)) throw Error("VALUE STRESS", "-stress must be finite");
+    throw Error("VALUE STRESS", "a servo stress applies to walls only");
+  if (std::isinf(stress)) throw Error("VALUE STRESS", "a servo stress must be finite");
   bodies_.stress[s] = stress;
   if (!std::isnan(stress)) bodies_.hold[s] = holdX | holdY | holdRotation, updateMass(s);
 }

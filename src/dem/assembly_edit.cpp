@@ -12,6 +12,8 @@ void Assembly::configure(int id, const ElementEdit& e) {
   const ShapeType type = b.shape[s]->type();
   if (e.radius && type != ShapeType::disc)
     throw Error("VALUE RADIUS", "a radius applies to discs only");
+  if (e.radius && !(*e.radius > 0 && std::isfinite(*e.radius)))
+    throw Error("VALUE RADIUS", "a disc's radius must be > 0, got " + formatNumber(*e.radius));
   if (e.stress && type != ShapeType::wall)
     throw Error("VALUE STRESS", "a servo stress applies to walls only");
   if (e.stress && std::isinf(*e.stress))

@@ -82,7 +82,8 @@ int Assembly::bond(int idA, int idB, double stiffness, double strength, double s
 }
 
 int Assembly::bondAll(const std::vector<int>& ids, double gap) {
-  if (!(gap >= 0) || !std::isfinite(gap)) throw Error("VALUE GAP", "-gap must be >= 0");
+  if (!(gap >= 0) || !std::isfinite(gap))
+    throw Error("VALUE GAP", "a bond gap must be finite and >= 0");
   std::vector<int> slots;
   if (ids.empty())
     for (int s = 0; s < bodies_.size(); ++s) slots.push_back(s);

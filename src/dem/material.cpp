@@ -10,32 +10,33 @@
 namespace sf::dem {
 namespace {
 
-// errorCode "VALUE DENSITY" for -density, like every other VALUE code.
-void require(bool ok, const char* option, const std::string& rule, double value) {
+// errorCode "VALUE DENSITY" for the density, like every other VALUE code; the
+// message names the field (the command layer names its option).
+void require(bool ok, const char* field, const std::string& rule, double value) {
   if (ok) return;
   std::string code = "VALUE ";
-  for (const char* c = option + 1; *c; ++c)
-    code += char(std::toupper(static_cast<unsigned char>(*c)));
-  throw Error(code, std::string(option) + " must be " + rule + ", got " + formatNumber(value));
+  for (const char* c = field; *c; ++c) code += char(std::toupper(static_cast<unsigned char>(*c)));
+  throw Error(code, std::string("a material's ") + field + " must be " + rule + ", got " +
+                        formatNumber(value));
 }
 
 }  // namespace
 
 void validate(const Material& m) {
   auto finite = [](double v) { return std::isfinite(v); };
-  require(finite(m.density) && m.density > 0, "-density", "> 0", m.density);
-  require(finite(m.kn) && m.kn > 0, "-kn", "> 0", m.kn);
-  require(finite(m.ks) && m.ks >= 0, "-ks", ">= 0", m.ks);
-  require(finite(m.friction) && m.friction >= 0, "-friction", ">= 0", m.friction);
+  require(finite(m.density) && m.density > 0, "density", "> 0", m.density);
+  require(finite(m.kn) && m.kn > 0, "kn", "> 0", m.kn);
+  require(finite(m.ks) && m.ks >= 0, "ks", ">= 0", m.ks);
+  require(finite(m.friction) && m.friction >= 0, "friction", ">= 0", m.friction);
   if (m.damping < 0)
-    require(finite(m.restitution) && m.restitution >= 0 && m.restitution <= 1, "-restitution",
+    require(finite(m.restitution) && m.restitution >= 0 && m.restitution <= 1, "restitution",
             "between 0 and 1", m.restitution);
-  require(finite(m.damping), "-damping", "finite", m.damping);
-  require(finite(m.bondStiffness) && m.bondStiffness >= 0, "-bondstiffness", ">= 0",
+  require(finite(m.damping), "damping", "finite", m.damping);
+  require(finite(m.bondStiffness) && m.bondStiffness >= 0, "bondstiffness", ">= 0",
           m.bondStiffness);
-  require(finite(m.bondStrength) && m.bondStrength >= 0, "-bondstrength", ">= 0", m.bondStrength);
-  require(finite(m.youngs) && m.youngs > 0, "-youngs", "> 0", m.youngs);
-  require(finite(m.poisson) && m.poisson > -1 && m.poisson < 0.5, "-poisson", "between -1 and 0.5",
+  require(finite(m.bondStrength) && m.bondStrength >= 0, "bondstrength", ">= 0", m.bondStrength);
+  require(finite(m.youngs) && m.youngs > 0, "youngs", "> 0", m.youngs);
+  require(finite(m.poisson) && m.poisson > -1 && m.poisson < 0.5, "poisson", "between -1 and 0.5",
           m.poisson);
 }
 

@@ -9,9 +9,14 @@ namespace sf::dem {
 
 void Assembly::makeSource(int id, const Vec2& acceleration, double interval, int limit) {
   const int s = slot(id);
-  if (!acceleration.allFinite()) throw Error("VALUE ACCELERATION", "-acceleration must be finite");
+  if (!acceleration.allFinite())
+    throw Error("VALUE ACCELERATION", "a source's acceleration must be finite");
   if (!(interval >= 0) || !std::isfinite(interval))
-    throw Error("VALUE INTERVAL", "-interval must be >= 0, got " + formatNumber(interval));
+    throw Error("VALUE INTERVAL",
+                "a source's interval must be >= 0, got " + formatNumber(interval));
+  if (limit < -1)
+    throw Error("VALUE LIMIT",
+                "a source's limit must be >= -1 (-1: none), got " + std::to_string(limit));
   if (bodies_.shape[s]->type() == ShapeType::wall)
     throw Error("VALUE SOURCE", "a wall cannot be a source");
   if (std::any_of(sources_.begin(), sources_.end(), [&](const Source& x) { return x.id == id; }))

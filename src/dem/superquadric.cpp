@@ -30,9 +30,9 @@ Superquadric::Superquadric(double a, double b, double m, double n, int samples)
     : a_(a), b_(b), m_(m), n_(n) {
   checkSemiAxes(a, b, "superquadric");
   checkExponents(m, n);
-  if (samples < 8 || samples > 100000)
+  if (samples < 8 || samples > 10000)  // the superquadric command's -sides range too
     throw Error("VALUE SIDES",
-                "superquadric samples must be 8 to 100000, got " + std::to_string(samples));
+                "superquadric samples must be 8 to 10000, got " + std::to_string(samples));
   // Exact mass properties (beta-function integrals over the four quadrants).
   area_ = 4 * a * b * moment(0, 0, m, n);
   const double ixx = 4 * a * a * a * b * moment(2, 0, m, n);

@@ -64,7 +64,7 @@ void Lattice::reconfigure(const ResolvedLattice& params) {
                 "the lattice's origin, size and spacing are fixed: delete it and create a new one");
   if (params.def.density != p_.def.density)
     throw Error("VALUE DENSITY",
-                "-density is the initial state: it cannot change on a live lattice");
+                "the density is the initial state: it cannot change on a live lattice");
   const bool wallsChanged = [&] {
     for (int s = 0; s < 4; ++s) {
       const SideDef &a = params.def.sides[s], &b = p_.def.sides[s];

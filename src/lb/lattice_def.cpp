@@ -17,10 +17,11 @@ std::string upper(std::string s) {
   return s;
 }
 
-void requirePositive(double value, const char* option) {
+// The message names the field; the command layer names its option.
+void requirePositive(double value, const char* field) {
   if (!(value > 0.0) || !std::isfinite(value))
-    throw Error("VALUE " + upper(option + 1),
-                std::string(option) + " must be > 0, got " + formatNumber(value));
+    throw Error("VALUE " + upper(field),
+                std::string("a lattice's ") + field + " must be > 0, got " + formatNumber(value));
 }
 
 // A length rounded for a suggestion (12 significant digits: no 0.8999999999999999).
@@ -73,16 +74,16 @@ double ResolvedLattice::soundSpeed() const {
 ResolvedLattice resolve(const LatticeDef& def) {
   ResolvedLattice r;
   r.def = def;
-  if (!def.origin.allFinite()) throw Error("VALUE ORIGIN", "-origin must be finite");
-  requirePositive(def.size.x(), "-size");
-  requirePositive(def.size.y(), "-size");
+  if (!def.origin.allFinite()) throw Error("VALUE ORIGIN", "a lattice's origin must be finite");
+  requirePositive(def.size.x(), "size");
+  requirePositive(def.size.y(), "size");
   if ((def.cells > 0) == (def.spacing > 0.0))
     throw Error("VALUE CELLS", "give exactly one of -cells and -spacing");
   double nx = def.cells;
   if (def.cells > 0) {
     r.h = def.size.x() / def.cells;
   } else {
-    requirePositive(def.spacing, "-spacing");
+    requirePositive(def.spacing, "spacing");
     r.h = def.spacing;
     nx = wholeCells(def.size.x(), r.h, "width");
   }
@@ -90,13 +91,14 @@ ResolvedLattice resolve(const LatticeDef& def) {
   checkNodeCount(nx, ny);
   r.nx = static_cast<int>(nx);
   r.ny = static_cast<int>(ny);
-  requirePositive(def.density, "-density");
+  requirePositive(def.density, "density");
 
   // Two of viscosity, tau and timestep give the third: nu = (2 tau - 1)/6 h^2/dt.
   const double h2 = r.h * r.h;
-  if (def.viscosity) requirePositive(*def.viscosity, "-viscosity");
-  if (def.tau && !std::isfinite(*def.tau)) throw Error("VALUE TAU", "-tau must be finite");
-  if (def.timestep) requirePositive(*def.timestep, "-timestep");
+  if (def.viscosity) requirePositive(*def.viscosity, "viscosity");
+  if (def.tau && !std::isfinite(*def.tau))
+    throw Error("VALUE TAU", "a lattice's tau must be finite");
+  if (def.timestep) requirePositive(*def.timestep, "timestep");
   if (def.viscosity && (def.tau || !def.timestep)) {
     r.viscosity = *def.viscosity;
     r.tau = def.tau.value_or(1.0);
@@ -125,8 +127,8 @@ ResolvedLattice resolve(const LatticeDef& def) {
   if (!(r.dt > 0) || !std::isfinite(r.dt))
     throw Error("VALUE TIMESTEP", "derived timestep " + formatNumber(r.dt) + " is not usable");
 
-  if (def.collision == Collision::trt) requirePositive(def.magic, "-magic");
-  if (!def.forcing.allFinite()) throw Error("VALUE FORCING", "-forcing must be finite");
+  requirePositive(def.magic, "magic");  // used by TRT only, but never valid <= 0
+  if (!def.forcing.allFinite()) throw Error("VALUE FORCING", "a lattice's forcing must be finite");
 
   // Periodic sides come in pairs; two open (velocity/pressure) sides may not meet.
   for (int axis = 0; axis < 2; ++axis) {

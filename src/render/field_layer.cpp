@@ -152,8 +152,13 @@ FieldValues sampleField(const lb::Lattice& lattice, const std::vector<float>& ep
       f.map.lo = -d;
       f.map.hi = d;
     } else if (field == Field::velocity) {
+      // Fluid at rest holds rounding noise (1e-17 of the lattice speed):
+      // scaled to it, still fluid would show the map's top colour. Below a
+      // billionth of h/dt the scale is Mach 0.01, and the fluid reads as
+      // still.
+      const double c = lattice.params().h / lattice.params().dt;
       f.map.lo = 0;
-      f.map.hi = hi;
+      f.map.hi = hi < 1e-9 * c ? 0.01 * c : hi;
     } else {
       f.map.lo = lo;
       f.map.hi = hi;

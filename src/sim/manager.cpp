@@ -144,7 +144,7 @@ void Manager::deleteLattice() {
 void Manager::setCoupling(const coupling::Settings& settings) {
   if (settings.subcells != coupling::kExact && settings.subcells != 1 && settings.subcells != 2 &&
       settings.subcells != 4 && settings.subcells != 8)
-    throw Error("VALUE SOLIDRATIO", "-solidratio must be exact, 1, 2, 4 or 8, got " +
+    throw Error("VALUE SOLIDRATIO", "the solid ratio's subcells must be exact, 1, 2, 4 or 8, got " +
                                         std::to_string(settings.subcells));
   coupling_ = settings;
 }
@@ -157,7 +157,7 @@ double Manager::timestep() const {
 }
 
 void Manager::setGravity(const Vec2& g) {
-  if (!g.allFinite()) throw Error("VALUE GRAVITY", "-gravity must be finite");
+  if (!g.allFinite()) throw Error("VALUE GRAVITY", "gravity must be finite");
   gravity_ = g;
 }
 
@@ -210,10 +210,10 @@ void Manager::checkCellReynolds() {
 void Manager::setStepping(std::optional<double> dt, std::optional<int> substeps) {
   const int n = substeps.value_or(substeps_);
   if (n < 1 || n > 1000)
-    throw Error("VALUE SUBSTEPS", "-substeps must be 1 to 1000, got " + std::to_string(n));
+    throw Error("VALUE SUBSTEPS", "substeps must be 1 to 1000, got " + std::to_string(n));
   if (dt) {
     if (!(*dt > 0) || !std::isfinite(*dt))
-      throw Error("VALUE TIMESTEP", "-timestep must be > 0, got " + formatNumber(*dt));
+      throw Error("VALUE TIMESTEP", "a timestep must be > 0, got " + formatNumber(*dt));
     checkDemTimestep(*dt / n);
     if (lattice_) {  // may refuse (tau); nothing has changed yet
       lb::LatticeDef def = lattice_->params().def;

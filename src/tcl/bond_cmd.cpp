@@ -1,17 +1,62 @@
-// bond create|auto|ids|info|delete|broken|help
+// bond create|auto|ids|info|delete|broken|options|help
+#include <cmath>
 #include <limits>
 
 #include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/session.hpp"
 
 namespace sf::tcl {
 namespace {
 
-const OptionSpec kCreateOptions[] = {
-    {"-stiffness", "k", "bond stiffness (default: the materials' -bondstiffness, the smaller)"},
-    {"-strength", "s", "tensile strength (default: the materials' -bondstrength, the smaller)"},
-    {"-shearstrength", "s", "shear strength (default: the tensile strength)"},
-    {nullptr, nullptr, nullptr}};
+// What bond create sets; NaN: from the two elements' materials.
+struct BondStage {
+  double stiffness = std::numeric_limits<double>::quiet_NaN();
+  double strength = std::numeric_limits<double>::quiet_NaN();
+  double shearStrength = std::numeric_limits<double>::quiet_NaN();
+};
+
+using Row = Option<BondStage>;
+Row bondRow(OptionInfo info, double BondStage::*field) {
+  info.range = {.min = 0};
+  return Row{info, [field](const BondStage& s) { return realValue(s.*field); },
+             [field](BondStage& s, const OptionValue& v) { s.*field = v.real; }};
+}
+const OptionTable<BondStage> kCreateOptions{
+    bondRow({"-stiffness",
+             "k",
+             "bond stiffness",
+             ValueKind::real,
+             "force/length",
+             {},
+             nullptr,
+             nullptr,
+             nullptr,
+             "the materials' -bondstiffness, the smaller"},
+            &BondStage::stiffness),
+    bondRow({"-strength",
+             "s",
+             "tensile strength",
+             ValueKind::real,
+             "force",
+             {},
+             nullptr,
+             nullptr,
+             nullptr,
+             "the materials' -bondstrength, the smaller"},
+            &BondStage::strength),
+    bondRow({"-shearstrength",
+             "s",
+             "shear strength",
+             ValueKind::real,
+             "force",
+             {},
+             nullptr,
+             nullptr,
+             nullptr,
+             "the tensile strength"},
+            &BondStage::shearStrength),
+};
 const OptionSpec kAutoOptions[] = {{"-elements", "IDS", "only among these elements (default all)"},
                                    {"-gap", "g", "largest surface gap bonded (default 0)"},
                                    {nullptr, nullptr, nullptr}};
@@ -25,19 +70,14 @@ int BondCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
   }
   int a = 0, b = 0;
   if (!getInt(interp, objv[1], "ID1", a) || !getInt(interp, objv[2], "ID2", b)) return TCL_ERROR;
-  double v[3] = {-1, -1, -1};
-  if (!parseOptions(interp, objc, objv, 3, kCreateOptions, [&](int k, Tcl_Obj* o) {
-        if (!getDouble(interp, o, kCreateOptions[k].name, v[k])) return false;
-        if (v[k] < 0)
-          return reject(
-              interp, "VALUE BOND",
-              std::string(kCreateOptions[k].name) + " must be >= 0, got " + formatNumber(v[k]));
-        return true;
-      }))
-    return TCL_ERROR;
+  BondStage stage;
+  if (!kCreateOptions.apply(interp, objc, objv, 3, stage)) return TCL_ERROR;
+  auto orFromMaterials = [](double v) { return std::isnan(v) ? -1.0 : v; };
   return guarded(interp, [&] {
-    Tcl_SetObjResult(
-        interp, Tcl_NewIntObj(sessionOf(data).manager.assembly().bond(a, b, v[0], v[1], v[2])));
+    Tcl_SetObjResult(interp,
+                     Tcl_NewIntObj(sessionOf(data).manager.assembly().bond(
+                         a, b, orFromMaterials(stage.stiffness), orFromMaterials(stage.strength),
+                         orFromMaterials(stage.shearStrength))));
     return TCL_OK;
   });
 }
@@ -142,17 +182,28 @@ int BondBroken(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
   return TCL_OK;
 }
 
+// create's options, one dict each (as `sim options`).
+int BondOptions(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
+    return TCL_ERROR;
+  }
+  Tcl_SetObjResult(interp, kCreateOptions.describe(BondStage{}));
+  return TCL_OK;
+}
+
 int BondHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
     Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
-  std::string text = helpText(
+  std::string text = kCreateOptions.help(
       "bond",
       {"create ID1 ID2 ?-stiffness k? ?-strength s? ?-shearstrength s?   -> bond id",
        "auto ?-elements IDS? ?-gap g?   -> number of bonds made", "ids", "info BID", "delete BID",
-       "broken ?-since t?   -> list of {time x y angle} break events", "help"},
-      kCreateOptions);
+       "broken ?-since t?   -> list of {time x y angle} break events",
+       "options   -> create's options as dicts", "help"},
+      BondStage{});
   Tcl_SetObjResult(interp, newString(text));
   return TCL_OK;
 }
@@ -167,6 +218,7 @@ void registerBondCommands(Tcl_Interp* interp, Session* session) {
                 {"info", BondInfo},
                 {"delete", BondDelete},
                 {"broken", BondBroken},
+                {"options", BondOptions},
                 {"help", BondHelp}},
                session);
 }

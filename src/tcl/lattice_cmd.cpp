@@ -42,7 +42,7 @@ const OptionTable<LatticeStage> kOptions{
           "width and height, whole numbers of spacings",
           ValueKind::vec2,
           "length",
-          {},
+          {.min = 0, .minOpen = true},
           nullptr,
           nullptr,
           nullptr,
@@ -85,7 +85,12 @@ const OptionTable<LatticeStage> kOptions{
           ""},
          [](const LatticeStage& s) { return realValue(s.viscosity); },
          [](LatticeStage& s, const OptionValue& v) { s.def.viscosity = v.real; }},
-     Row{{"-density", "rho0", "initial and reference density", ValueKind::real, "mass/length^2"},
+     Row{{"-density",
+          "rho0",
+          "initial and reference density",
+          ValueKind::real,
+          "mass/length^2",
+          {.min = 0, .minOpen = true}},
          [](const LatticeStage& s) { return realValue(s.def.density); },
          [](LatticeStage& s, const OptionValue& v) { s.def.density = v.real; }},
      Row{{"-tau",
@@ -148,7 +153,12 @@ const OptionTable<LatticeStage> kOptions{
          [](LatticeStage& s, const OptionValue& v) {
            s.def.forceScheme = lb::ForceScheme(v.choice);
          }},
-     Row{{"-magic", "Lambda", "TRT magic parameter (0.1875: walls exactly halfway)"},
+     Row{{"-magic",
+          "Lambda",
+          "TRT magic parameter (0.1875: walls exactly halfway)",
+          ValueKind::real,
+          "",
+          {.min = 0, .minOpen = true}},
          [](const LatticeStage& s) { return realValue(s.def.magic); },
          [](LatticeStage& s, const OptionValue& v) { s.def.magic = v.real; }}},
     true};
@@ -202,8 +212,15 @@ int LatticeConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
       return TCL_ERROR;
     }
     std::vector<bool> given;
+    const double density = stage.def.density;
     if (!kOptions.apply(interp, objc, objv, 1, stage, &given)) return TCL_ERROR;
     LatticeDef& def = stage.def;
+    if (def.density != density) {  // the kernel refuses it too, naming no option
+      fail(interp, "VALUE DENSITY",
+           "-density is the initial state: it cannot change on a live lattice");
+      noteOptionOnce(interp, "-density");
+      return TCL_ERROR;
+    }
     // Keep the timestep unless tau is what changed.
     if (given[kViscosity] && !given[kTau]) def.tau.reset();
     if (given[kTau]) def.timestep.reset();

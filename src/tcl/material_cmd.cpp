@@ -1,139 +1,119 @@
-// material create|configure|cget|names|help
+// material create|configure|cget|names|options|help
 #include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/session.hpp"
 
 namespace sf::tcl {
 namespace {
 
-enum Opt {
-  kDensity,
-  kKn,
-  kKs,
-  kFriction,
-  kRestitution,
-  kDamping,
-  kNormalForce,
-  kBondStiffness,
-  kBondStrength,
-  kLaw,
-  kYoungs,
-  kPoisson
+using dem::Material;
+using Row = Option<Material>;
+
+// "-restitution must be between 0 and 1, got 1.5": the words of dem::validate,
+// which keeps the same ranges as the invariant of every material it stores.
+std::string restitutionRange(double e) {
+  return "-restitution must be between 0 and 1, got " + formatNumber(e);
+}
+std::string poissonRange(double nu) {
+  return "-poisson must be between -1 and 0.5, got " + formatNumber(nu);
+}
+
+constexpr Range kPositive{.min = 0, .minOpen = true};
+constexpr Range kNonNegative{.min = 0};
+
+// A plain real field of the material.
+Row realRow(OptionInfo info, double Material::*field) {
+  return Row{info, [field](const Material& m) { return realValue(m.*field); },
+             [field](Material& m, const OptionValue& v) { m.*field = v.real; }};
+}
+
+const OptionTable<Material> kOptions{
+    realRow({"-density", "rho", "mass per unit volume (mass = rho x area, per unit thickness)",
+             ValueKind::real, "mass/length^2", kPositive},
+            &Material::density),
+    realRow({"-kn", "k", "normal contact stiffness", ValueKind::real, "force/length", kPositive},
+            &Material::kn),
+    realRow(
+        {"-ks", "k", "tangential contact stiffness", ValueKind::real, "force/length", kNonNegative},
+        &Material::ks),
+    realRow({"-friction", "mu", "Coulomb friction coefficient", ValueKind::real, "", kNonNegative},
+            &Material::friction),
+    Row{{"-restitution",
+         "e",
+         "target normal restitution (sets the damping)",
+         ValueKind::real,
+         "",
+         {.min = 0, .max = 1},
+         nullptr,
+         nullptr,
+         restitutionRange},
+        [](const Material& m) { return realValue(m.restitution); },
+        [](Material& m, const OptionValue& v) { m.restitution = v.real, m.damping = -1; }},
+    // The kernel keeps "none" as a negative damping, so it cannot refuse one:
+    // the range is this layer's. {} (what cget shows then) goes back to it.
+    Row{{"-damping", "c",
+         "fixed normal damping coefficient instead of -restitution; {}: none, -restitution rules",
+         ValueKind::real, "mass/time", kNonNegative, nullptr, nullptr, nullptr, nullptr, true},
+        [](const Material& m) { return m.damping >= 0 ? realValue(m.damping) : emptyValue(); },
+        [](Material& m, const OptionValue& v) { m.damping = v.empty ? -1 : v.real; }},
+    Row{{"-normalforce",
+         "signed|compressive",
+         "signed: the dashpot may pull as a contact opens; compressive: clamped at 0",
+         ValueKind::choice,
+         "",
+         {},
+         dem::normalForceNames,
+         "normalforce"},
+        [](const Material& m) { return choiceValue(int(m.normalForce)); },
+        [](Material& m, const OptionValue& v) { m.normalForce = dem::NormalForce(v.choice); }},
+    realRow({"-bondstiffness", "k", "stiffness of bonds made of this material", ValueKind::real,
+             "force/length", kNonNegative},
+            &Material::bondStiffness),
+    realRow({"-bondstrength", "s", "force at which such bonds break", ValueKind::real, "force",
+             kNonNegative},
+            &Material::bondStrength),
+    Row{{"-law",
+         "linear|hertz",
+         "contact law: linear spring-dashpot or Hertz-Mindlin",
+         ValueKind::choice,
+         "",
+         {},
+         dem::contactLawNames,
+         "law"},
+        [](const Material& m) { return choiceValue(int(m.law)); },
+        [](Material& m, const OptionValue& v) { m.law = dem::ContactLaw(v.choice); }},
+    realRow({"-youngs", "E", "Young's modulus (Hertz-Mindlin)", ValueKind::real, "force/length",
+             kPositive},
+            &Material::youngs),
+    Row{{"-poisson",
+         "nu",
+         "Poisson's ratio (Hertz-Mindlin)",
+         ValueKind::real,
+         "",
+         {.min = -1, .max = 0.5, .minOpen = true, .maxOpen = true},
+         nullptr,
+         nullptr,
+         poissonRange},
+        [](const Material& m) { return realValue(m.poisson); },
+        [](Material& m, const OptionValue& v) { m.poisson = v.real; }},
 };
 
-const OptionSpec kOptions[] = {
-    {"-density", "rho", "mass per unit volume (mass = rho x area, per unit thickness)"},
-    {"-kn", "k", "normal contact stiffness"},
-    {"-ks", "k", "tangential contact stiffness"},
-    {"-friction", "mu", "Coulomb friction coefficient"},
-    {"-restitution", "e", "target normal restitution, 0..1 (sets the damping)"},
-    {"-damping", "c", "fixed normal damping coefficient instead of -restitution"},
-    {"-normalforce", "signed|compressive",
-     "signed: the dashpot may pull as a contact opens; compressive: clamped at 0"},
-    {"-bondstiffness", "k", "stiffness of bonds made of this material"},
-    {"-bondstrength", "s", "force at which such bonds break"},
-    {"-law", "linear|hertz", "contact law: linear spring-dashpot (default) or Hertz-Mindlin"},
-    {"-youngs", "E", "Young's modulus (Hertz-Mindlin)"},
-    {"-poisson", "nu", "Poisson's ratio (Hertz-Mindlin)"},
-    {nullptr, nullptr, nullptr}};
-
-Tcl_Obj* optionValue(const dem::Material& m, int k) {
-  switch (k) {
-    case kDensity:
-      return newDouble(m.density);
-    case kKn:
-      return newDouble(m.kn);
-    case kKs:
-      return newDouble(m.ks);
-    case kFriction:
-      return newDouble(m.friction);
-    case kRestitution:
-      return newDouble(m.restitution);
-    case kDamping:
-      return m.damping >= 0 ? newDouble(m.damping) : Tcl_NewObj();
-    case kNormalForce:
-      return Tcl_NewStringObj(dem::normalForceNames[int(m.normalForce)], -1);
-    case kBondStiffness:
-      return newDouble(m.bondStiffness);
-    case kBondStrength:
-      return newDouble(m.bondStrength);
-    case kLaw:
-      return Tcl_NewStringObj(dem::contactLawNames[int(m.law)], -1);
-    case kYoungs:
-      return newDouble(m.youngs);
-    default:
-      return newDouble(m.poisson);
-  }
+// A new material's settings, for help's and `material options`' defaults.
+const Material& defaults() {
+  static const Material d{"default"};
+  return d;
 }
 
-bool applyOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first,
-                  dem::Material& m) {
-  return parseOptions(interp, objc, objv, first, kOptions, [&](int k, Tcl_Obj* v) {
-    if (k == kLaw) {
-      int law = 0;
-      if (!getChoice(interp, v, "law", dem::contactLawNames, law)) return false;
-      m.law = static_cast<dem::ContactLaw>(law);
-      return true;
-    }
-    if (k == kNormalForce) {
-      int mode = 0;
-      if (!getChoice(interp, v, "normalforce", dem::normalForceNames, mode)) return false;
-      m.normalForce = static_cast<dem::NormalForce>(mode);
-      return true;
-    }
-    double d = 0;
-    if (!getDouble(interp, v, kOptions[k].name, d)) return false;
-    switch (k) {
-      case kDensity:
-        m.density = d;
-        break;
-      case kKn:
-        m.kn = d;
-        break;
-      case kKs:
-        m.ks = d;
-        break;
-      case kFriction:
-        m.friction = d;
-        break;
-      case kRestitution:
-        m.restitution = d, m.damping = -1;
-        break;
-      case kDamping:
-        if (d < 0)
-          return reject(interp, "VALUE DAMPING", "-damping must be >= 0, got " + formatNumber(d));
-        m.damping = d;
-        break;
-      case kBondStiffness:
-        m.bondStiffness = d;
-        break;
-      case kBondStrength:
-        m.bondStrength = d;
-        break;
-      case kYoungs:
-        m.youngs = d;
-        break;
-      default:
-        m.poisson = d;
-        break;
-    }
-    // Range checks here, not only in the table, so that errorInfo names the option.
-    try {
-      dem::validate(m);
-    } catch (const Error& e) {
-      return reject(interp, e.code(), e.what());
-    }
-    return true;
-  });
-}
-
+// The rows check every value; the material table validates again when it
+// stores one (dem::validate, the same ranges), as its invariant.
 int MaterialCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc < 2 || objc % 2) {
     Tcl_WrongNumArgs(interp, 1, objv, "NAME ?-option value ...?");
     return TCL_ERROR;
   }
-  dem::Material m;
+  Material m;
   m.name = Tcl_GetString(objv[1]);
-  if (!applyOptions(interp, objc, objv, 2, m)) return TCL_ERROR;
+  if (!kOptions.apply(interp, objc, objv, 2, m)) return TCL_ERROR;
   return guarded(interp, [&] {
     sessionOf(data).manager.assembly().materials().add(m);
     Tcl_SetObjResult(interp, objv[1]);
@@ -149,27 +129,22 @@ int MaterialConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* co
   dem::Assembly& a = sessionOf(data).manager.assembly();
   return guarded(interp, [&] {
     const int index = a.materials().index(Tcl_GetString(objv[1]));
-    dem::Material m = a.materials()[index];
-    if (objc == 2 || objc == 3) {
-      if (objc == 3) {
-        const int k = optionIndex(interp, objv[2], kOptions);
-        if (k < 0) return TCL_ERROR;
-        Tcl_SetObjResult(interp, optionValue(m, k));
-        return TCL_OK;
-      }
-      Tcl_Obj* all = Tcl_NewListObj(0, nullptr);
-      for (int k = 0; kOptions[k].name; ++k) {
-        Tcl_ListObjAppendElement(nullptr, all, Tcl_NewStringObj(kOptions[k].name, -1));
-        Tcl_ListObjAppendElement(nullptr, all, optionValue(m, k));
-      }
-      Tcl_SetObjResult(interp, all);
+    Material m = a.materials()[index];
+    if (objc == 2) {
+      Tcl_SetObjResult(interp, kOptions.all(m));
+      return TCL_OK;
+    }
+    if (objc == 3) {
+      const int k = optionIndex(interp, objv[2], kOptions.specs());
+      if (k < 0) return TCL_ERROR;
+      Tcl_SetObjResult(interp, kOptions.get(m, k));
       return TCL_OK;
     }
     if (objc % 2) {
       Tcl_WrongNumArgs(interp, 1, objv, "NAME ?-option value ...?");
       return TCL_ERROR;
     }
-    if (!applyOptions(interp, objc, objv, 2, m)) return TCL_ERROR;
+    if (!kOptions.apply(interp, objc, objv, 2, m)) return TCL_ERROR;
     for (int s = 0; s < a.bodies().size(); ++s)  // a new density must leave every mass finite
       if (a.bodies().material[s] == index) dem::Assembly::checkMass(*a.bodies().shape[s], m);
     a.materials().replace(index, m);
@@ -186,10 +161,10 @@ int MaterialCget(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
   }
   return guarded(interp, [&] {
     const dem::MaterialTable& t = sessionOf(data).manager.assembly().materials();
-    const dem::Material& m = t[t.index(Tcl_GetString(objv[1]))];
-    const int k = optionIndex(interp, objv[2], kOptions);
+    const Material& m = t[t.index(Tcl_GetString(objv[1]))];
+    const int k = optionIndex(interp, objv[2], kOptions.specs());
     if (k < 0) return TCL_ERROR;
-    Tcl_SetObjResult(interp, optionValue(m, k));
+    Tcl_SetObjResult(interp, kOptions.get(m, k));
     return TCL_OK;
   });
 }
@@ -206,16 +181,30 @@ int MaterialNames(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
   return TCL_OK;
 }
 
+// The option table, one dict per option (the workbench's property panel
+// builds its fields from it).
+int MaterialOptions(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
+    return TCL_ERROR;
+  }
+  Tcl_SetObjResult(interp, kOptions.describe(defaults()));
+  return TCL_OK;
+}
+
 int MaterialHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
     Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
-  Tcl_SetObjResult(interp, newString(helpText("material",
-                                              {"create NAME ?-option value ...?",
-                                               "configure NAME ?-option value ...?",
-                                               "cget NAME -option", "names", "help"},
-                                              kOptions)));
+  Tcl_SetObjResult(interp, newString(kOptions.help(
+                               "material",
+                               {"create NAME ?-option value ...?",
+                                "configure NAME ?-option value ...?", "cget NAME -option", "names",
+                                "options   -> the options as dicts: name type unit min "
+                                "max choices default ...",
+                                "help"},
+                               defaults())));
   return TCL_OK;
 }
 
@@ -227,6 +216,7 @@ void registerMaterialCommands(Tcl_Interp* interp, Session* session) {
                 {"configure", MaterialConfigure},
                 {"cget", MaterialCget},
                 {"names", MaterialNames},
+                {"options", MaterialOptions},
                 {"help", MaterialHelp}},
                session);
 }

@@ -30,6 +30,22 @@ bool inRange(const Range& r, double v) {
   return (r.minOpen ? v > r.min : v >= r.min) && (r.maxOpen ? v < r.max : v <= r.max);
 }
 
+// A list of some of the choices: "bad WHAT "z": must be x, y, or rot" for one
+// that is not.
+bool getFlags(Tcl_Interp* interp, Tcl_Obj* obj, const OptionInfo& info, unsigned& flags) {
+  int n = 0;
+  Tcl_Obj** items = nullptr;
+  if (Tcl_ListObjGetElements(interp, obj, &n, &items) != TCL_OK) return false;
+  flags = 0;
+  for (int i = 0; i < n; ++i) {
+    int k = 0;
+    if (!getChoice(interp, items[i], info.what ? info.what : info.name + 1, info.choices, k))
+      return false;
+    flags |= 1u << k;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool convertOption(Tcl_Interp* interp, Tcl_Obj* obj, const OptionInfo& info, OptionValue& out) {
@@ -53,8 +69,18 @@ bool convertOption(Tcl_Interp* interp, Tcl_Obj* obj, const OptionInfo& info, Opt
       break;
     case ValueKind::boolean:
       return getBool(interp, obj, info.name, out.boolean);
-    case ValueKind::vec2:
-      return getVec2(interp, obj, info.name, out.vec);
+    case ValueKind::vec2:  // the range bounds each coordinate: check the first out of it
+      if (!getVec2(interp, obj, info.name, out.vec)) return false;
+      checked = inRange(info.range, out.vec.x()) ? out.vec.y() : out.vec.x();
+      break;
+    case ValueKind::vec3: {
+      std::vector<double> v;
+      if (!getDoubles(interp, obj, info.name, 3, v)) return false;
+      out.vec3 = Eigen::Vector3d(v[0], v[1], v[2]);
+      return true;
+    }
+    case ValueKind::flags:
+      return getFlags(interp, obj, info, out.flags);
     case ValueKind::choice:
       return getChoice(interp, obj, info.what ? info.what : info.name + 1, info.choices,
                        out.choice);
@@ -66,7 +92,7 @@ bool convertOption(Tcl_Interp* interp, Tcl_Obj* obj, const OptionInfo& info, Opt
   return reject(interp, errorCodeOf(info.name),
                 std::string(info.name) + " must be " +
                     rangeText(info.range, info.kind == ValueKind::integer) + ", got " +
-                    Tcl_GetString(obj));
+                    (info.kind == ValueKind::vec2 ? formatNumber(checked) : Tcl_GetString(obj)));
 }
 
 Tcl_Obj* optionObj(const OptionInfo& info, const OptionValue& value) {
@@ -82,6 +108,18 @@ Tcl_Obj* optionObj(const OptionInfo& info, const OptionValue& value) {
       return newVec2(value.vec);
     case ValueKind::choice:
       return Tcl_NewStringObj(info.choices[value.choice], -1);
+    case ValueKind::vec3: {
+      Tcl_Obj* items[3] = {newDouble(value.vec3[0]), newDouble(value.vec3[1]),
+                           newDouble(value.vec3[2])};
+      return Tcl_NewListObj(3, items);
+    }
+    case ValueKind::flags: {
+      Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
+      for (int k = 0; info.choices[k]; ++k)
+        if (value.flags & (1u << k))
+          Tcl_ListObjAppendElement(nullptr, list, Tcl_NewStringObj(info.choices[k], -1));
+      return list;
+    }
     case ValueKind::custom:
       break;
   }
@@ -89,9 +127,11 @@ Tcl_Obj* optionObj(const OptionInfo& info, const OptionValue& value) {
 }
 
 Tcl_Obj* describeOption(const OptionInfo& info, Tcl_Obj* defaultValue) {
-  static const char* const kinds[] = {"real", "integer", "boolean", "vec2", "choice", "custom"};
+  static const char* const kinds[] = {"real",   "integer", "boolean", "vec2",
+                                      "choice", "custom",  "vec3",    "flags"};
   const Range& r = info.range;
-  const bool numeric = info.kind == ValueKind::real || info.kind == ValueKind::integer;
+  const bool numeric = info.kind == ValueKind::real || info.kind == ValueKind::integer ||
+                       info.kind == ValueKind::vec2;
   Tcl_Obj* choices = Tcl_NewListObj(0, nullptr);
   for (const char* const* c = info.choices; c && *c; ++c)
     Tcl_ListObjAppendElement(nullptr, choices, Tcl_NewStringObj(*c, -1));

@@ -28,7 +28,7 @@ namespace eval ::sf {
     if {[info commands ::sf::TclSource] ne ""} return
     rename ::source ::sf::TclSource
     set map {}
-    foreach verb {create delete ids info help} {dict set map $verb ::sf::source::$verb}
+    foreach verb {create delete ids info options help} {dict set map $verb ::sf::source::$verb}
     # Any other first word is Tcl's "source ?-encoding name? FILE".
     namespace ensemble create -command ::source -map $map -prefixes 0 \
         -unknown {apply {{ensemble word args} {list ::sf::TclSourceFile $word}}}

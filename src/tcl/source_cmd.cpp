@@ -1,43 +1,44 @@
-// source create|delete|ids|info|help
+// source create|delete|ids|info|options|help
 #include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/session.hpp"
 
 namespace sf::tcl {
 namespace {
 
-const OptionSpec kOptions[] = {
-    {"-acceleration", "{ax ay}", "body acceleration of each clone (default {0 0})"},
-    {"-interval", "t", "least time between two clones (default 0)"},
-    {"-limit", "n", "clones to make; -1 for no limit (default -1)"},
-    {nullptr, nullptr, nullptr}};
+// What source create takes, converted and checked before the kernel sees it.
+struct SourceStage {
+  Vec2 acceleration = Vec2::Zero();
+  double interval = 0;
+  int limit = -1;
+};
+
+using Row = Option<SourceStage>;
+const OptionTable<SourceStage> kOptions{
+    Row{{"-acceleration", "{ax ay}", "body acceleration of each clone", ValueKind::vec2,
+         "length/time^2"},
+        [](const SourceStage& s) { return vecValue(s.acceleration); },
+        [](SourceStage& s, const OptionValue& v) { s.acceleration = v.vec; }},
+    Row{{"-interval", "t", "least time between two clones", ValueKind::real, "time", {.min = 0}},
+        [](const SourceStage& s) { return realValue(s.interval); },
+        [](SourceStage& s, const OptionValue& v) { s.interval = v.real; }},
+    Row{{"-limit", "n", "clones to make; -1 for no limit", ValueKind::integer, "", {.min = -1}},
+        [](const SourceStage& s) { return integerValue(s.limit); },
+        [](SourceStage& s, const OptionValue& v) { s.limit = v.integer; }},
+};
 
 int SourceCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc < 2 || objc % 2) {
     Tcl_WrongNumArgs(interp, 1, objv, "ID ?-acceleration {ax ay}? ?-interval t? ?-limit n?");
     return TCL_ERROR;
   }
-  int id = 0, limit = -1;
-  double interval = 0;
-  Vec2 accel = Vec2::Zero();
+  int id = 0;
+  SourceStage stage;
   if (!getInt(interp, objv[1], "ID", id)) return TCL_ERROR;
-  if (!parseOptions(interp, objc, objv, 2, kOptions, [&](int k, Tcl_Obj* v) {
-        if (k == 0) return getVec2(interp, v, "-acceleration", accel);
-        if (k == 1) {
-          if (!getDouble(interp, v, "-interval", interval)) return false;
-          if (interval < 0)
-            return reject(interp, "VALUE INTERVAL",
-                          "-interval must be >= 0, got " + formatNumber(interval));
-          return true;
-        }
-        if (!getInt(interp, v, "-limit", limit)) return false;
-        if (limit < -1)
-          return reject(interp, "VALUE LIMIT",
-                        "-limit must be >= -1, got " + std::to_string(limit));
-        return true;
-      }))
-    return TCL_ERROR;
+  if (!kOptions.apply(interp, objc, objv, 2, stage)) return TCL_ERROR;
   return guarded(interp, [&] {
-    sessionOf(data).manager.assembly().makeSource(id, accel, interval, limit);
+    sessionOf(data).manager.assembly().makeSource(id, stage.acceleration, stage.interval,
+                                                  stage.limit);
     Tcl_SetObjResult(interp, Tcl_NewIntObj(id));
     return TCL_OK;
   });
@@ -90,17 +91,28 @@ int SourceInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
   return fail(interp, "LOOKUP SOURCE", "element " + std::to_string(id) + " is not a source");
 }
 
+// create's options, one dict each (as `sim options`).
+int SourceOptions(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
+    return TCL_ERROR;
+  }
+  Tcl_SetObjResult(interp, kOptions.describe(SourceStage{}));
+  return TCL_OK;
+}
+
 int SourceHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
     Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
   Tcl_SetObjResult(
-      interp, newString(helpText("source",
-                                 {"create ID ?-acceleration {ax ay}? ?-interval t? ?-limit n?   "
-                                  "(element ID becomes a source)",
-                                  "delete ID", "ids", "info ID   -> dict ... made clones", "help"},
-                                 kOptions)));
+      interp, newString(kOptions.help("source",
+                                      {"create ID ?-acceleration {ax ay}? ?-interval t? ?-limit "
+                                       "n?   (element ID becomes a source)",
+                                       "delete ID", "ids", "info ID   -> dict ... made clones",
+                                       "options   -> create's options as dicts", "help"},
+                                      SourceStage{})));
   return TCL_OK;
 }
 
@@ -112,6 +124,7 @@ void registerSourceCommands(Tcl_Interp* interp, Session* session) {
                 {"delete", SourceDelete},
                 {"ids", SourceIds},
                 {"info", SourceInfo},
+                {"options", SourceOptions},
                 {"help", SourceHelp}},
                session);
 }

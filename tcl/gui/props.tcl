@@ -10,7 +10,11 @@ namespace eval ::sf::gui::props {
     variable values             ;# option -> value in the entry
     variable shown              ;# option -> value the scene had when shown
     variable errors             ;# option -> message of the last refused edit
+    variable flags              ;# option,choice -> 1 where a flags option holds the choice
+    variable choicesOf          ;# flags option -> its choices, in order
     array set values {}
+    array set flags {}
+    array set choicesOf {}
     array set shown {}
     array set errors {}
 }
@@ -73,6 +77,8 @@ proc ::sf::gui::props::show {} {
     variable values
     variable shown
     variable errors
+    variable flags
+    variable choicesOf
     variable lastTarget
     variable target
     set rows $f.rows
@@ -84,10 +90,13 @@ proc ::sf::gui::props::show {} {
     if {[catch {uplevel #0 [prefix]} options]} {
         set options {}
     }
-    # Options that do not apply to this shape report {} and are left out.
+    # An element's table lists only the options that apply to its shape.
+    set table [table]
     set keep {}
     foreach {opt value} $options {
-        if {$value eq {} && [lindex [prefix] 0] eq "element" && $opt ni {-fix -stress}} continue
+        if {[lindex $target 0] eq "element" && [dict size $table] && ![dict exists $table $opt]} {
+            continue
+        }
         lappend keep $opt $value
     }
     # Rebuild the rows only when the set of options changes (typing is kept).
@@ -97,8 +106,9 @@ proc ::sf::gui::props::show {} {
         array unset values
         array unset shown
         array unset errors
+        array unset flags
+        array unset choicesOf
         set r 0
-        set table [table]
         foreach opt $names {
             set key [string range $opt 1 end]
             ttk::label $rows.l$key -text $opt
@@ -112,6 +122,17 @@ proc ::sf::gui::props::show {} {
             } elseif {$type eq "boolean"} {
                 ttk::checkbutton $rows.e$key -variable ::sf::gui::props::values($opt) \
                     -onvalue 1 -offvalue 0 -command [list ::sf::gui::props::apply $opt]
+            } elseif {$type eq "flags"} {
+                # One checkbutton per choice ({x y rot} of -fix), side by side.
+                ttk::frame $rows.e$key
+                set choicesOf($opt) [dict get $row choices]
+                foreach c $choicesOf($opt) {
+                    ttk::checkbutton $rows.e$key.$c -text $c \
+                        -variable ::sf::gui::props::flags($opt,$c) \
+                        -command [list ::sf::gui::props::applyFlags $opt]
+                    pack $rows.e$key.$c -side left -padx {0 8}
+                    if {$row ne {}} { ::sf::gui::tip $rows.e$key.$c [describe $row] }
+                }
             } else {
                 ttk::entry $rows.e$key -textvariable ::sf::gui::props::values($opt) -width 16
             }
@@ -121,8 +142,8 @@ proc ::sf::gui::props::show {} {
             }
             ttk::label $rows.x$key -foreground #c92a2a -wraplength 240 -justify left
             # Each option takes two rows: the field, and its refusal beneath.
-            grid $rows.l$key -row [expr {2 * $r}] -column 0 -sticky ew -pady 1 -padx {0 6}
-            grid $rows.e$key -row [expr {2 * $r}] -column 1 -sticky ew -pady 1
+            grid $rows.l$key -row [expr {2 * $r}] -column 0 -sticky ew -pady 2 -padx {0 8}
+            grid $rows.e$key -row [expr {2 * $r}] -column 1 -sticky ew -pady 2 -padx {0 2}
             grid $rows.x$key -row [expr {2 * $r + 1}] -column 0 -columnspan 2 -sticky w
             grid remove $rows.x$key
             ::bind $rows.e$key <Return> [list ::sf::gui::props::apply $opt]
@@ -135,6 +156,7 @@ proc ::sf::gui::props::show {} {
     }
     foreach {opt value} $keep {
         set key [string range $opt 1 end]
+        set value [tidy $value]
         if {[info exists errors($opt)]} {
             # A refused value stays in its field, its reason beneath it.
             lassign $errors($opt) refused message
@@ -148,6 +170,11 @@ proc ::sf::gui::props::show {} {
             set values($opt) $value
         }
         set shown($opt) $value
+        syncFlags $opt
+        # Choices that change (an element's -material: the materials there are).
+        if {[dict exists $table $opt] && [dict get $table $opt type] eq "choice"} {
+            $rows.e$key configure -values [dict get $table $opt choices]
+        }
     }
     $f.info configure -text [summary]
 }
@@ -176,10 +203,14 @@ proc ::sf::gui::props::summary {} {
     }
 }
 
-# The target's option table by name ({} for a noun without one): `NOUN options`.
+# The target's option table by name ({} for a noun without one): `NOUN options`,
+# for an element those that apply to its shape.
 proc ::sf::gui::props::table {} {
+    variable target
     set table {}
-    if {![catch {uplevel #0 [list [lindex [prefix] 0] options]} rows]} {
+    set cmd [list [lindex [prefix] 0] options]
+    if {[lindex $target 0] eq "element"} { lappend cmd [lindex $target 1] }
+    if {![catch {uplevel #0 $cmd} rows]} {
         foreach row $rows { dict set table [dict get $row name] $row }
     }
     return $table
@@ -197,9 +228,29 @@ proc ::sf::gui::props::describe {row} {
         if {$hi ne {}} { lappend range "[expr {[dict get $row maxopen] ? "<" : "<="}] $hi" }
         append text "\nrange: [join $range { and }]"
     }
-    if {[dict get $row choices] ne {}} { append text "\none of: [join [dict get $row choices] {, }]" }
-    append text "\ndefault: [dict get $row default]"
+    if {[dict get $row choices] ne {}} {
+        set which [expr {[dict get $row type] eq "flags" ? "any" : "one"}]
+        append text "\n$which of: [join [dict get $row choices] {, }]"
+    }
+    set default [dict get $row default]
+    append text "\ndefault: [expr {$default eq {} ? "none" : $default}]"
     return $text
+}
+
+# A value as the panel shows it: each number in it to 12 significant digits
+# (a wall's -from reads 0.1, not 0.09999999999999998); words that are not
+# numbers, and lists within the list, as they are.
+proc ::sf::gui::props::tidy {value} {
+    if {[catch {llength $value}]} { return $value }
+    set out {}
+    foreach word $value {
+        if {[string is double -strict $word] && ![string is entier -strict $word]} {
+            set word [format %.12g $word]
+            if {[string is entier -strict $word]} { append word .0 }
+        }
+        lappend out $word
+    }
+    return $out
 }
 
 # Applies one edited field: the configure command, through ::sf::gui::do.
@@ -224,11 +275,33 @@ proc ::sf::gui::props::apply {opt} {
     show
 }
 
+# A flags option's checkbutton changed: the list of the choices ticked.
+proc ::sf::gui::props::applyFlags {opt} {
+    variable values
+    variable flags
+    variable choicesOf
+    set values($opt) [lmap c $choicesOf($opt) {
+        if {!$flags($opt,$c)} continue
+        set c
+    }]
+    apply $opt
+}
+
 proc ::sf::gui::props::revert {opt} {
     variable values
     variable shown
     clearError $opt
     set values($opt) $shown($opt)
+    syncFlags $opt
+}
+
+# A flags option's checkbuttons from its value.
+proc ::sf::gui::props::syncFlags {opt} {
+    variable values
+    variable flags
+    variable choicesOf
+    if {![info exists choicesOf($opt)]} return
+    foreach c $choicesOf($opt) { set flags($opt,$c) [expr {$c in $values($opt)}] }
 }
 
 proc ::sf::gui::props::clearError {opt} {

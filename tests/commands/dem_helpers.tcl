@@ -85,3 +85,55 @@ proc missingWords {text words} {
 }
 
 set pi [expr {acos(-1)}]
+
+# A value just outside the range of a row of `NOUN options` ({} for a row
+# without one): the end itself where it is open, one beyond it where closed.
+proc outOfRange {row} {
+    set min [dict get $row min]
+    set max [dict get $row max]
+    set bad {}
+    if {$min ne {}} {
+        set bad [expr {[dict get $row minopen] ? $min : $min - 1}]
+    } elseif {$max ne {}} {
+        set bad [expr {[dict get $row maxopen] ? $max : $max + 1}]
+    }
+    if {$bad ne {} && [dict get $row type] eq "integer"} { set bad [expr {int($bad)}] }
+    return $bad
+}
+
+# "SANDFLOW VALUE RADIUS" for the row of -radius.
+proc valueCodeOf {row} {
+    list SANDFLOW VALUE [string toupper [string range [dict get $row name] 1 end]]
+}
+
+# For each row of `rows` with a range, `NOUN configure ...` with a value out
+# of it: the problems (see refusedChangeNothing), and each errorCode that is
+# not SANDFLOW VALUE <OPTION>.
+proc refusedOutOfRange {prefix rows} {
+    set problems {}
+    foreach row $rows {
+        set bad [outOfRange $row]
+        if {$bad eq {}} continue
+        set command [list {*}$prefix [dict get $row name] $bad]
+        lappend problems {*}[uplevel 1 [list refusedChangeNothing [list $command]]]
+        set code [lindex [uplevel 1 [list failure $command]] 1]
+        if {$code ne [valueCodeOf $row]} { lappend problems "errorCode \"$code\": $command" }
+    }
+    return $problems
+}
+
+# Each option of `rows` set, through `configure`, to what `cget` gives: the
+# options whose `cget` then differs.
+proc cgetRoundTrip {noun name rows} {
+    set differ {}
+    foreach row $rows {
+        set opt [dict get $row name]
+        set before [$noun cget $name $opt]
+        if {[catch {$noun configure $name $opt $before} message]} {
+            lappend differ "$opt {$before}: $message"
+        } elseif {[$noun cget $name $opt] ne $before} {
+            lappend differ "$opt {$before} -> {[$noun cget $name $opt]}"
+        }
+    }
+    return $differ
+}

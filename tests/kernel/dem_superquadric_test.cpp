@@ -78,9 +78,9 @@ TEST(DemSuperquadric, RefusesExponentsOutOfRange) {
 }
 
 TEST(DemSuperquadric, RefusesTooFewOrTooManySamples) {
-  EXPECT_EQ(refusal(1, 1, 2, 2, 7), "VALUE SIDES: superquadric samples must be 8 to 100000, got 7");
-  EXPECT_EQ(refusal(1, 1, 2, 2, 100001),
-            "VALUE SIDES: superquadric samples must be 8 to 100000, got 100001");
+  EXPECT_EQ(refusal(1, 1, 2, 2, 7), "VALUE SIDES: superquadric samples must be 8 to 10000, got 7");
+  EXPECT_EQ(refusal(1, 1, 2, 2, 10001),
+            "VALUE SIDES: superquadric samples must be 8 to 10000, got 10001");
 }
 
 // At the ends of every range the mass properties stay exact and the outline

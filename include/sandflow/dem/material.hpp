@@ -29,7 +29,8 @@ struct Material {
   double poisson = 0.3;  // ... and Poisson's ratio
 };
 
-// Throws sf::Error naming the option when a value is out of range.
+// Throws sf::Error naming the field when a value is out of range (the same
+// ranges as the material command's option rows).
 void validate(const Material& m);
 
 // Normal damping ratio zeta for a restitution coefficient e (physics.md §4):

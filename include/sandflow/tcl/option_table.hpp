@@ -15,9 +15,12 @@
 namespace sf::tcl {
 
 // `custom`: the row converts and shows the value itself (a dict of walls, say).
-enum class ValueKind { real, integer, boolean, vec2, choice, custom };
+// `flags`: a list of some of the choices, each at most once ({x rot}), shown in
+// the choices' order.
+enum class ValueKind { real, integer, boolean, vec2, choice, custom, vec3, flags };
 
 // An interval; an end at infinity is not checked, an open end excludes itself.
+// A vec2's range bounds each of its coordinates.
 struct Range {
   double min = -std::numeric_limits<double>::infinity();
   double max = std::numeric_limits<double>::infinity();
@@ -31,6 +34,8 @@ struct OptionValue {
   bool boolean = false;
   Vec2 vec = Vec2::Zero();
   int choice = 0;
+  Eigen::Vector3d vec3 = Eigen::Vector3d::Zero();
+  unsigned flags = 0;  // bit k: choices[k] is in the list
   bool empty = false;  // {} given where the row allows it (OptionInfo::orEmpty)
 };
 
@@ -50,6 +55,16 @@ inline OptionValue vecValue(const Vec2& v) {
 inline OptionValue choiceValue(int v) {
   return {.choice = v};
 }
+inline OptionValue vec3Value(const Eigen::Vector3d& v) {
+  return {.vec3 = v};
+}
+inline OptionValue flagsValue(unsigned v) {
+  return {.flags = v};
+}
+// No value: the option does not apply (a wall's -radius), shown as {}.
+inline OptionValue emptyValue() {
+  return {.empty = true};
+}
 
 // What a row says about its option, whatever it configures.
 struct OptionInfo {
@@ -59,7 +74,7 @@ struct OptionInfo {
   ValueKind kind = ValueKind::real;
   const char* unit = "";  // in the user's consistent units, e.g. "time"
   Range range{};
-  const char* const* choices = nullptr;  // ValueKind::choice: null-terminated
+  const char* const* choices = nullptr;  // ValueKind::choice, flags: null-terminated
   const char* what = nullptr;            // a choice's noun in "bad WHAT": default the name
   // The refusal of a value out of range, where it has its own words
   // ("tau 0.49 is unstable: must exceed 0.5"); default "-name must be ...".
@@ -82,8 +97,8 @@ struct Option {
   OptionInfo info;
   std::function<OptionValue(const Stage&)> get;
   std::function<void(Stage&, const OptionValue&)> set;
-  // ValueKind::custom instead: convert onto the stage (false with the error
-  // set), and show.
+  // Instead of get and set (ValueKind::custom, or a row whose choices are not
+  // fixed): convert onto the stage (false with the error set), and show.
   std::function<bool(Tcl_Interp*, Tcl_Obj*, Stage&)> parse = nullptr;
   std::function<Tcl_Obj*(const Stage&)> show = nullptr;
 };
@@ -115,7 +130,7 @@ class OptionTable {
     auto convert = [&](int k, Tcl_Obj* v) {
       const Option<Stage>& row = rows_[std::size_t(k)];
       if (given) (*given)[std::size_t(k)] = true;
-      if (info(k).kind == ValueKind::custom) return row.parse(interp, v, stage);
+      if (row.parse) return row.parse(interp, v, stage);
       OptionValue value;
       if (!convertOption(interp, v, info(k), value)) return false;
       row.set(stage, value);
@@ -136,7 +151,7 @@ class OptionTable {
   }
   Tcl_Obj* get(const Stage& stage, int k) const {
     const Option<Stage>& row = rows_[std::size_t(k)];
-    return info(k).kind == ValueKind::custom ? row.show(stage) : optionObj(info(k), row.get(stage));
+    return row.show ? row.show(stage) : optionObj(info(k), row.get(stage));
   }
   // configure with no option: -name value ...
   Tcl_Obj* all(const Stage& stage) const {

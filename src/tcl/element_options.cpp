@@ -1,0 +1,297 @@
+// The element options' rows and the tables the element commands take.
+#include "element_options.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "sandflow/dem/polygon.hpp"
+
+namespace sf::tcl {
+namespace {
+
+using dem::ShapeType;
+using Row = Option<ElementStage>;
+
+const char* const kHoldNames[] = {"x", "y", "rot", nullptr};  // bits of dem::Hold
+
+// Rows over one optional field of the stage: {} where it is not set.
+template <class T, class Make>
+OptionValue maybe(const std::optional<T>& v, Make make) {
+  return v ? make(*v) : emptyValue();
+}
+Row vec2Row(OptionInfo info, std::optional<Vec2> ElementStage::*f) {
+  info.kind = ValueKind::vec2;
+  return Row{info, [f](const ElementStage& s) { return maybe(s.*f, vecValue); },
+             [f](ElementStage& s, const OptionValue& v) { s.*f = v.vec; }};
+}
+Row vec3Row(OptionInfo info, std::optional<Eigen::Vector3d> ElementStage::*f) {
+  info.kind = ValueKind::vec3;
+  return Row{info, [f](const ElementStage& s) { return maybe(s.*f, vec3Value); },
+             [f](ElementStage& s, const OptionValue& v) { s.*f = v.vec3; }};
+}
+Row realRow(OptionInfo info, std::optional<double> ElementStage::*f) {
+  info.kind = ValueKind::real;
+  return Row{info, [f](const ElementStage& s) { return maybe(s.*f, realValue); },
+             [f](ElementStage& s, const OptionValue& v) { s.*f = v.real; }};
+}
+Row integerRow(OptionInfo info, std::optional<int> ElementStage::*f) {
+  info.kind = ValueKind::integer;
+  return Row{info, [f](const ElementStage& s) { return maybe(s.*f, integerValue); },
+             [f](ElementStage& s, const OptionValue& v) { s.*f = v.integer; }};
+}
+
+// A polygon's corners: at least three points, convexity the kernel's to judge.
+bool parseVertices(Tcl_Interp* interp, Tcl_Obj* value, ElementStage& s) {
+  int n = 0;
+  Tcl_Obj** items = nullptr;
+  if (Tcl_ListObjGetElements(interp, value, &n, &items) != TCL_OK) return false;
+  if (n < 6 || n % 2)
+    return reject(interp, "VALUE VERTICES",
+                  "-vertices must be a list of at least 3 points {x1 y1 x2 y2 x3 y3 ...}");
+  std::vector<Vec2> points;
+  for (int i = 0; i < n; i += 2) {
+    double x = 0, y = 0;
+    if (!getDouble(interp, items[i], "-vertices", x) ||
+        !getDouble(interp, items[i + 1], "-vertices", y))
+      return false;
+    points.emplace_back(x, y);
+  }
+  s.vertices = points;
+  return true;
+}
+
+const Row kCenter =
+    vec2Row({"-center", "{x y}", "position of the centroid", {}, "length"}, &ElementStage::center);
+const Row kRadius =
+    realRow({"-radius", "r", "disc radius", {}, "length", {.min = 0, .minOpen = true}},
+            &ElementStage::radius);
+const Row kFrom =
+    vec2Row({"-from", "{x y}", "wall start point", {}, "length"}, &ElementStage::from);
+const Row kTo = vec2Row({"-to", "{x y}", "wall end point", {}, "length"}, &ElementStage::to);
+const Row kThickness = realRow({"-thickness",
+                                "t",
+                                "a wall's thickness, for its mass when set free",
+                                {},
+                                "length",
+                                {.min = 0, .minOpen = true},
+                                nullptr,
+                                nullptr,
+                                nullptr,
+                                "1/20 of its length"},
+                               &ElementStage::thickness);
+// A choice among the session's materials: converted and shown by name.
+const Row kMaterial{
+    {"-material",
+     "NAME",
+     "the element's material, by name",
+     ValueKind::choice,
+     "",
+     {},
+     nullptr,
+     nullptr,
+     nullptr,
+     "default"},
+    nullptr,
+    nullptr,
+    [](Tcl_Interp* interp, Tcl_Obj* v, ElementStage& s) {
+      const int m = s.materials ? s.materials->find(Tcl_GetString(v)) : -1;
+      if (m < 0)
+        return reject(interp, "LOOKUP MATERIAL",
+                      std::string("no material named \"") + Tcl_GetString(v) + "\"");
+      s.material = m;
+      return true;
+    },
+    [](const ElementStage& s) {
+      return s.material && s.materials ? newString((*s.materials)[*s.material].name) : Tcl_NewObj();
+    }};
+const Row kAngle = realRow({"-angle", "rad", "orientation", {}, "rad"}, &ElementStage::angle);
+const Row kVelocity = vec3Row({"-velocity",
+                               "{vx vy w}",
+                               "velocity and angular velocity (prescribed where held)",
+                               {},
+                               "length/time, rad/time"},
+                              &ElementStage::velocity);
+const Row kFix{{"-fix",
+                "{x y rot}",
+                "degrees of freedom held at their prescribed velocity; {} frees all",
+                ValueKind::flags,
+                "",
+                {},
+                kHoldNames,
+                "degree of freedom"},
+               [](const ElementStage& s) { return maybe(s.hold, flagsValue); },
+               [](ElementStage& s, const OptionValue& v) { s.hold = std::uint8_t(v.flags); }};
+const Row kForce =
+    vec3Row({"-force", "{Fx Fy T}", "applied force and torque", {}, "force, force length"},
+            &ElementStage::force);
+const Row kAcceleration = vec2Row({"-acceleration",
+                                   "{ax ay}",
+                                   "a body acceleration of its own, added to gravity",
+                                   {},
+                                   "length/time^2"},
+                                  &ElementStage::acceleration);
+const Row kId = integerRow({"-id",
+                            "N",
+                            "the element's id",
+                            {},
+                            "",
+                            {.min = 0},
+                            nullptr,
+                            nullptr,
+                            nullptr,
+                            "the next free one"},
+                           &ElementStage::id);
+const Row kVertices{{"-vertices", "{x1 y1 x2 y2 ...}",
+                     "corners of a convex polygon, in either order", ValueKind::custom, "length"},
+                    nullptr,
+                    nullptr,
+                    parseVertices,
+                    [](const ElementStage&) { return Tcl_NewObj(); }};
+// Semi-axes and exponents: their ranges are the kernel's (dem/shape_checks.hpp),
+// checked whole before a shape is made.
+const Row kAxes =
+    vec2Row({"-axes", "{a b}", "semi-axes of the ellipse along its own x and y", {}, "length"},
+            &ElementStage::axes);
+const Row kSides = integerRow({"-sides",
+                               "N",
+                               "sides of the polygon that approximates the ellipse",
+                               {},
+                               "",
+                               {.min = 3, .max = 10000}},
+                              &ElementStage::sides);
+// A superquadric's outline samples: the kernel takes no fewer than 8.
+const Row kSamples =
+    integerRow({"-sides",
+                "N",
+                "points that sample the superquadric's outline for contacts",
+                {},
+                "",
+                {.min = 8, .max = 10000},
+                nullptr,
+                nullptr,
+                [](double n) {
+                  return "-sides must be 8 to 10000 for a superquadric, got " + formatNumber(n);
+                }},
+               &ElementStage::sides);
+const Row kStress{{"-stress",
+                   "s",
+                   "a wall becomes a plate holding stress s (load s x length) on what it "
+                   "presses; {} stops",
+                   ValueKind::real,
+                   "force/length",
+                   {},
+                   nullptr,
+                   nullptr,
+                   nullptr,
+                   nullptr,
+                   true},
+                  [](const ElementStage& s) { return maybe(s.stress, realValue); },
+                  [](ElementStage& s, const OptionValue& v) {
+                    s.stress = v.empty ? std::numeric_limits<double>::quiet_NaN() : v.real;
+                  }};
+const Row kExponents =
+    vec2Row({"-exponents", "{m n}", "superquadric exponents, 1 to 100: |x/a|^m + |y/b|^n = 1"},
+            &ElementStage::exponents);
+
+}  // namespace
+
+ElementStage ElementStage::of(const dem::Assembly& a, int slot) {
+  const dem::Bodies& b = a.bodies();
+  const dem::Shape& shape = *b.shape[slot];
+  ElementStage s;
+  s.materials = &a.materials();
+  s.center = b.x[slot];
+  if (shape.type() == ShapeType::disc) s.radius = static_cast<const dem::Disc&>(shape).radius();
+  if (shape.type() == ShapeType::wall) {
+    const auto [p, q] = static_cast<const dem::Wall&>(shape).ends(b.x[slot], b.angle[slot]);
+    s.from = p, s.to = q;
+    s.thickness = static_cast<const dem::Wall&>(shape).thickness();
+  }
+  s.material = b.material[slot];
+  s.angle = b.angle[slot];
+  s.velocity = Eigen::Vector3d(b.v[slot].x(), b.v[slot].y(), b.w[slot]);
+  s.hold = b.hold[slot];
+  s.force =
+      Eigen::Vector3d(b.appliedForce[slot].x(), b.appliedForce[slot].y(), b.appliedTorque[slot]);
+  s.acceleration = b.acceleration[slot];
+  s.stress = b.stress[slot];
+  s.id = b.id[slot];
+  return s;
+}
+
+ElementStage ElementStage::defaults(ShapeType shape) {
+  ElementStage s;
+  s.angle = 0;
+  s.velocity = s.force = Eigen::Vector3d::Zero();
+  s.hold = shape == ShapeType::wall ? dem::holdX | dem::holdY | dem::holdRotation : 0;
+  s.acceleration = Vec2::Zero();
+  s.sides = 32;
+  s.stress = std::numeric_limits<double>::quiet_NaN();
+  return s;
+}
+
+const ElementTable& discOptions() {
+  static const ElementTable t{kCenter, kRadius, kMaterial,     kAngle, kVelocity,
+                              kFix,    kForce,  kAcceleration, kId};
+  return t;
+}
+const ElementTable& wallOptions() {
+  static const ElementTable t{kFrom, kTo,    kThickness,    kMaterial, kAngle, kVelocity,
+                              kFix,  kForce, kAcceleration, kId,       kStress};
+  return t;
+}
+const ElementTable& polygonOptions() {
+  static const ElementTable t{kVertices, kMaterial, kAngle,        kVelocity,
+                              kFix,      kForce,    kAcceleration, kId};
+  return t;
+}
+const ElementTable& ellipseOptions() {
+  static const ElementTable t{kCenter,   kAxes, kSides, kMaterial,     kAngle,
+                              kVelocity, kFix,  kForce, kAcceleration, kId};
+  return t;
+}
+const ElementTable& superquadricOptions() {
+  static const ElementTable t{kCenter,   kAxes, kExponents, kSamples,      kMaterial, kAngle,
+                              kVelocity, kFix,  kForce,     kAcceleration, kId};
+  return t;
+}
+const ElementTable& configureOptions() {
+  static const ElementTable t{kCenter,   kRadius, kFrom,  kTo,           kMaterial, kAngle,
+                              kVelocity, kFix,    kForce, kAcceleration, kStress};
+  return t;
+}
+
+// Whether configure's option applies to a shape: the kernel refuses the rest
+// (Assembly::configure).
+static bool appliesTo(const std::string& option, ShapeType shape) {
+  if (option == "-radius") return shape == ShapeType::disc;
+  if (option == "-from" || option == "-to" || option == "-stress") return shape == ShapeType::wall;
+  return true;
+}
+
+Tcl_Obj* describeConfigureOptions(const dem::MaterialTable& materials,
+                                  std::optional<ShapeType> shape) {
+  const ElementTable& table = configureOptions();
+  Tcl_Obj* all = table.describe(ElementStage::defaults(shape.value_or(ShapeType::disc)));
+  Tcl_Obj* names = Tcl_NewListObj(0, nullptr);
+  for (const std::string& n : materials.names())
+    Tcl_ListObjAppendElement(nullptr, names, newString(n));
+  Tcl_Obj* key = Tcl_NewStringObj("choices", -1);
+  Tcl_IncrRefCount(key);
+  Tcl_IncrRefCount(all);
+  int n = 0;
+  Tcl_Obj** items = nullptr;
+  Tcl_ListObjGetElements(nullptr, all, &n, &items);
+  Tcl_Obj* rows = Tcl_NewListObj(0, nullptr);
+  for (int k = 0; k < n; ++k) {
+    const std::string name = table.info(k).name;
+    if (shape && !appliesTo(name, *shape)) continue;
+    if (name == "-material") Tcl_DictObjPut(nullptr, items[k], key, names);
+    Tcl_ListObjAppendElement(nullptr, rows, items[k]);
+  }
+  Tcl_DecrRefCount(all);
+  Tcl_DecrRefCount(key);
+  return rows;
+}
+
+}  // namespace sf::tcl
