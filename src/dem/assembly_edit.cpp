@@ -1,5 +1,5 @@
 // Assembly::configure: one element changed by hand, checked whole before any
-// column is written.
+// column is written; bonds and sources made and removed by element id.
 #include <cmath>
 
 #include "sandflow/dem/assembly.hpp"
@@ -55,6 +55,34 @@ void Assembly::configure(int id, const ElementEdit& e) {
   }
   b.started[s] = 0;  // velocities or position set by hand: restart the half step
   updateMass(s);
+  touched();
+}
+
+int Assembly::bond(int idA, int idB, double stiffness, double strength, double shearStrength) {
+  const int a = slot(idA), b = slot(idB);
+  return bonds_.make(bodies_, materials_, a, b, stiffness, strength, shearStrength);
+}
+
+int Assembly::bondAll(const std::vector<int>& ids, double gap) {
+  if (!(gap >= 0) || !std::isfinite(gap))
+    throw Error("VALUE GAP", "a bond gap must be finite and >= 0");
+  std::vector<int> slots;
+  if (ids.empty())
+    for (int s = 0; s < bodies_.size(); ++s) slots.push_back(s);
+  else
+    for (int id : ids) slots.push_back(slot(id));  // throws on an unknown id first
+  return bonds_.makeAll(bodies_, materials_, slots, gap);
+}
+
+void Assembly::makeSource(int id, const Vec2& acceleration, double interval, int limit) {
+  const int s = slot(id);
+  sources_.make(bodies_, s, acceleration, interval, limit);
+  updateMass(s);
+  touched();
+}
+
+void Assembly::removeSource(int id) {
+  sources_.remove(bodies_, id);
   touched();
 }
 

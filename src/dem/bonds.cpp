@@ -1,15 +1,19 @@
-// Bonds of the Assembly: making them, their forces, and breaking.
+// The bond set: making bonds, their forces, and breaking.
 #include <algorithm>
 #include <cmath>
 
 #include "sandflow/core/error.hpp"
 #include "sandflow/core/memory.hpp"
-#include "sandflow/dem/assembly.hpp"
+#include "sandflow/dem/bond_set.hpp"
+#include "sandflow/dem/dess.hpp"
+#include "sandflow/dem/narrow_phase.hpp"
 
 namespace sf::dem {
+namespace {
 
-bool Assembly::closestPoints(int a, int b, double gap, Vec2& pa, Vec2& pb) const {
-  const Bodies& B = bodies_;
+// Closest surface points of two elements (a's, b's), for bonding; false when
+// farther apart than `gap`.
+bool closestPoints(const Bodies& B, int a, int b, double gap, Vec2& pa, Vec2& pb) {
   const Shape &sa = *B.shape[a], &sb = *B.shape[b];
   if (sa.type() == ShapeType::disc && sb.type() == ShapeType::disc) {
     const double ra = static_cast<const Disc&>(sa).radius(),
@@ -45,8 +49,11 @@ bool Assembly::closestPoints(int a, int b, double gap, Vec2& pa, Vec2& pb) const
   return true;
 }
 
-int Assembly::bond(int idA, int idB, double stiffness, double strength, double shearStrength) {
-  const int a = slot(idA), b = slot(idB);
+}  // namespace
+
+int BondSet::make(const Bodies& B, const MaterialTable& materials, int a, int b, double stiffness,
+                  double strength, double shearStrength) {
+  const int idA = B.id[a], idB = B.id[b];
   if (a == b) throw Error("VALUE BOND", "an element cannot be bonded to itself");
   for (const Bond& x : bonds_)
     if ((x.idA == idA && x.idB == idB) || (x.idA == idB && x.idB == idA))
@@ -55,43 +62,37 @@ int Assembly::bond(int idA, int idB, double stiffness, double strength, double s
   for (double v : {stiffness, strength, shearStrength})
     if (!std::isfinite(v)) throw Error("VALUE BOND", "bond stiffness and strengths must be finite");
   Vec2 pa, pb;
-  if (!closestPoints(a, b, std::numeric_limits<double>::infinity(), pa, pb))
+  if (!closestPoints(B, a, b, std::numeric_limits<double>::infinity(), pa, pb))
     throw Error("VALUE BOND", "elements " + std::to_string(idA) + " and " + std::to_string(idB) +
                                   " cannot be bonded: they do not touch");
-  const Material &ma = materials_[bodies_.material[a]], &mb = materials_[bodies_.material[b]];
+  const Material &ma = materials[B.material[a]], &mb = materials[B.material[b]];
   Bond x;
-  x.id = nextBondId_++;
+  x.id = nextId_++;
   x.idA = idA;
   x.idB = idB;
-  x.anchorA = rotated(pa - bodies_.x[a], -bodies_.angle[a]);
-  x.anchorB = rotated(pb - bodies_.x[b], -bodies_.angle[b]);
-  Vec2 n = bodies_.x[b] - bodies_.x[a];
+  x.anchorA = rotated(pa - B.x[a], -B.angle[a]);
+  x.anchorB = rotated(pb - B.x[b], -B.angle[b]);
+  Vec2 n = B.x[b] - B.x[a];
   if ((pb - pa).norm() > 1e-12 * n.norm()) n = pb - pa;
   x.normal0 = n.normalized();
   x.length = (pb - pa).dot(x.normal0);
-  x.angleA0 = bodies_.angle[a];
-  x.angleB0 = bodies_.angle[b];
+  x.angleA0 = B.angle[a];
+  x.angleB0 = B.angle[b];
   x.stiffness = stiffness >= 0 ? stiffness : std::min(ma.bondStiffness, mb.bondStiffness);
   x.strength = strength >= 0 ? strength : std::min(ma.bondStrength, mb.bondStrength);
   x.shearStrength = shearStrength >= 0 ? shearStrength : x.strength;
-  const double meff = 1.0 / (bodies_.invMass[a] + bodies_.invMass[b]);
+  const double meff = 1.0 / (B.invMass[a] + B.invMass[b]);
   const double zeta = combine(ma, mb).zeta;
   x.damping = std::isfinite(meff) ? 2 * zeta * std::sqrt(meff * x.stiffness) : 0.0;
   bonds_.push_back(x);
   return x.id;
 }
 
-int Assembly::bondAll(const std::vector<int>& ids, double gap) {
-  if (!(gap >= 0) || !std::isfinite(gap))
-    throw Error("VALUE GAP", "a bond gap must be finite and >= 0");
-  std::vector<int> slots;
-  if (ids.empty())
-    for (int s = 0; s < bodies_.size(); ++s) slots.push_back(s);
-  else
-    for (int id : ids) slots.push_back(slot(id));  // throws on an unknown id first
+int BondSet::makeAll(const Bodies& B, const MaterialTable& materials, const std::vector<int>& slots,
+                     double gap) {
   std::vector<Box> boxes;
   for (int s : slots) {
-    Box b = bodies_.shape[s]->bounds(bodies_.x[s], bodies_.angle[s]);
+    Box b = B.shape[s]->bounds(B.x[s], B.angle[s]);
     boxes.push_back({b.lo - Vec2::Constant(gap / 2), b.hi + Vec2::Constant(gap / 2)});
   }
   Dess sorter;
@@ -102,14 +103,14 @@ int Assembly::bondAll(const std::vector<int>& ids, double gap) {
   std::vector<std::pair<int, int>> chosen;
   for (const auto& [i, j] : pairs) {
     const int a = slots[i], b = slots[j];
-    const int idA = bodies_.id[a], idB = bodies_.id[b];
+    const int idA = B.id[a], idB = B.id[b];
     const bool bonded = std::any_of(bonds_.begin(), bonds_.end(), [&](const Bond& x) {
       return (x.idA == idA && x.idB == idB) || (x.idA == idB && x.idB == idA);
     });
-    const bool immovable = bodies_.invMass[a] == 0 && bodies_.invMass[b] == 0;
+    const bool immovable = B.invMass[a] == 0 && B.invMass[b] == 0;
     Vec2 pa, pb;
-    if (bonded || immovable || !canCollide(bodies_.shape[a]->type(), bodies_.shape[b]->type()) ||
-        !closestPoints(a, b, gap, pa, pb))
+    if (bonded || immovable || !canCollide(B.shape[a]->type(), B.shape[b]->type()) ||
+        !closestPoints(B, a, b, gap, pa, pb))
       continue;
     chosen.emplace_back(std::min(idA, idB), std::max(idA, idB));
   }
@@ -118,18 +119,22 @@ int Assembly::bondAll(const std::vector<int>& ids, double gap) {
   checkMemory(2 * total * sizeof(Bond), "bonding " + std::to_string(chosen.size()) +
                                             " more pairs (" + formatNumber(total) +
                                             " bonds in all)");
-  for (const auto& [idA, idB] : chosen) bond(idA, idB);
+  for (const auto& [idA, idB] : chosen) make(B, materials, B.slot(idA), B.slot(idB), -1, -1, -1);
   return int(chosen.size());
 }
 
-void Assembly::unbond(int bondId) {
+void BondSet::remove(int bondId) {
   auto it =
       std::find_if(bonds_.begin(), bonds_.end(), [&](const Bond& x) { return x.id == bondId; });
   if (it == bonds_.end()) throw Error("LOOKUP BOND", "no bond with id " + std::to_string(bondId));
   bonds_.erase(it);
 }
 
-const Bond& Assembly::bondInfo(int bondId) const {
+void BondSet::forget(int id) {
+  std::erase_if(bonds_, [&](const Bond& x) { return x.idA == id || x.idB == id; });
+}
+
+const Bond& BondSet::info(int bondId) const {
   auto it =
       std::find_if(bonds_.begin(), bonds_.end(), [&](const Bond& x) { return x.id == bondId; });
   if (it == bonds_.end()) throw Error("LOOKUP BOND", "no bond with id " + std::to_string(bondId));
@@ -139,15 +144,15 @@ const Bond& Assembly::bondInfo(int bondId) const {
 // Spring between the anchors: along the bond's normal (which turns with the
 // mean rotation of the two elements) it resists stretching from the rest
 // separation; across it, the anchors' sideways offset. Damped like a contact.
-void Assembly::bondForces(double dt, const std::vector<Vec2>& v, const std::vector<double>& w) {
-  Bodies& B = bodies_;
-  // The bonds that hold and the breaks are committed by step() once nothing
+void BondSet::addForces(Bodies& B, double time, double dt, const std::vector<Vec2>& v,
+                        const std::vector<double>& w) {
+  // The bonds that hold and the breaks are committed (commit()) once nothing
   // in the step can fail (a failed step keeps its bonds).
   std::vector<Bond>& kept = pendingBonds_;
   kept.clear();
   kept.reserve(bonds_.size());
   pendingBreaks_.clear();
-  bondsPending_ = true;
+  pending_ = true;
   for (Bond x : bonds_) {
     const int a = B.slot(x.idA), b = B.slot(x.idB);
     const Vec2 ra = rotated(x.anchorA, B.angle[a]), rb = rotated(x.anchorB, B.angle[b]);
@@ -160,7 +165,7 @@ void Assembly::bondForces(double dt, const std::vector<Vec2>& v, const std::vect
     const double tension = x.stiffness * stretch;
     const double shear = x.stiffness * offset.norm();
     if (tension > x.strength || shear > x.shearStrength) {
-      pendingBreaks_.push_back({time_ + dt, 0.5 * (pa + pb), std::atan2(n.y(), n.x()), x.id, x.idA,
+      pendingBreaks_.push_back({time + dt, 0.5 * (pa + pb), std::atan2(n.y(), n.x()), x.id, x.idA,
                                 x.idB, tension > x.strength});
       continue;
     }
@@ -171,6 +176,13 @@ void Assembly::bondForces(double dt, const std::vector<Vec2>& v, const std::vect
     B.torque[b] += cross(rb, x.force);
     kept.push_back(x);
   }
+}
+
+void BondSet::commit() {
+  if (!pending_) return;
+  bonds_.swap(pendingBonds_);
+  breaks_.insert(breaks_.end(), pendingBreaks_.begin(), pendingBreaks_.end());
+  pending_ = false;
 }
 
 }  // namespace sf::dem

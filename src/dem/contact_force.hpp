@@ -74,7 +74,7 @@ struct LawOutput {
     ks = 8.0 * c.shearModulus * root;
     if (!c.fixedDamping) cn = c.dampingPart * std::sqrt(kn);  // 2 zeta sqrt(m* kn)
   }
-  // A normal dashpot solved for the step (Assembly::prepareDamping says
+  // A normal dashpot solved for the step (ContactSet::prepareDamping says
   // which) acts over the part s of the step the contact spans: where it
   // begins, overlap / |vn| is the time since; where it ends, the time left.
   // Otherwise its force jumps by cn vn there,
@@ -116,6 +116,12 @@ struct LawOutput {
   sx = sliding ? heldX : sx;
   sy = sliding ? heldY : sy;
   return {fn * c.nx + ftx, fn * c.ny + fty, sx, sy};
+}
+
+// The radius of curvature the Hertz law sees: a wall is flat.
+inline double curvatureRadius(const Shape& shape) {
+  return shape.type() == ShapeType::wall ? std::numeric_limits<double>::infinity()
+                                         : shape.contactSize();
 }
 
 inline double normalFloor(const PairLaw& law) {

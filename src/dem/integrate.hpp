@@ -1,8 +1,10 @@
 #pragma once
-// The integrators' update of every slot's motion from its force and torque
-// (physics.md §4), over raw arrays: the loop keeps its pointers in registers
-// and runs in chunks on any number of threads (each slot on its own, so the
-// result does not depend on the count).
+// The integrators (physics.md §4) as two stages around the force evaluation:
+// preForce moves what a scheme moves before the forces (Verlet's first kick
+// and drift) and readies the half-step velocities of new elements; postForce
+// advances with the new forces. Both run over raw arrays: the loops keep
+// their pointers in registers and run in chunks on any number of threads
+// (each slot on its own, so the result does not depend on the count).
 #include <cstdint>
 
 #include "sandflow/dem/assembly.hpp"
@@ -15,11 +17,23 @@ struct Motion {
   const Vec2* force;
   const double *torque, *mass, *inertia;
   const std::uint8_t* hold;
+  std::uint8_t* started;  // half-step velocity set (see preForce, postForce)
 };
 
-// Slots whose half-step velocity is not set yet (new, or set by hand): v(-dt/2)
-// from v(0), so that central difference is second order from the first step.
-void startCentral(const Motion& m, std::uint8_t* started, int n, double dt);
-void advance(Integrator scheme, const Motion& m, int n, double dt, int threads);
+// Whether the scheme kicks with forces before it computes new ones: an
+// element without a previous step (new, or set by hand) then needs its force
+// at its present state first (Assembly::startForces), and is started.
+inline bool kicksBeforeForces(Integrator scheme) {
+  return scheme == Integrator::verlet;
+}
+
+// Verlet: kick by half a step with the last forces, then drift. Central and
+// Euler: elements not started take v(t) as the half-step velocity the
+// velocity-dependent forces (damping) see.
+void preForce(Integrator scheme, const Motion& m, int n, double dt, int threads);
+// Central: elements not started get v(-dt/2) from v(0) and the new force,
+// so that central difference is second order from the first step; then
+// kick and drift. Euler: kick and drift. Verlet: the second half kick.
+void postForce(Integrator scheme, const Motion& m, int n, double dt, int threads);
 
 }  // namespace sf::dem::detail

@@ -3,13 +3,14 @@
 #include <cmath>
 #include <limits>
 
+#include "contact_force.hpp"
 #include "sandflow/dem/assembly.hpp"
 
 namespace sf::dem {
 
 double Assembly::stiffestContact(int s) const {
   const Material& m = materials_[bodies_.material[s]];
-  const double r = curvatureRadius(s);
+  const double r = detail::curvatureRadius(*bodies_.shape[s]);
   return m.law == ContactLaw::hertz && std::isfinite(r)
              ? 8.0 * m.youngs / (2 * (1 + m.poisson)) * std::sqrt(r * 0.01 * r)
              : std::max(m.kn, m.ks);

@@ -22,7 +22,7 @@ void writeBondsVtp(const dem::Assembly& assembly, std::ostream& out) {
     if (a < 0 || bb < 0) continue;
     line(x.id, x.idA, x.idB, a, bb);
     // The bond's direction turns with the mean rotation of its elements
-    // (Assembly::bondForces); tension is a positive normal force.
+    // (BondSet::addForces); tension is a positive normal force.
     const Vec2 n = rotated(x.normal0, 0.5 * ((b.angle[a] - x.angleA0) + (b.angle[bb] - x.angleB0)));
     const double along = x.force.dot(n);
     force.add(x.force);

@@ -61,7 +61,17 @@ void Lattice::saveState(ByteWriter& out) const {
   out.put(std::uint64_t(count));
   out.putRaw(f_, count * sizeof(double));
   out.putRaw(g_, count * sizeof(double));
-  out.put(covered_.cells);
+  // The cells as their struct's bytes (the format), with the padding after
+  // `interior` zeroed: it is never written, and would make equal scenes'
+  // checkpoints and hashes differ.
+  std::vector<CoveredCell> cells(covered_.cells.size());
+  std::memset(static_cast<void*>(cells.data()), 0, cells.size() * sizeof(CoveredCell));
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const CoveredCell& c = covered_.cells[k];
+    cells[k].node = c.node, cells[k].interior = c.interior, cells[k].eps = c.eps;
+    cells[k].ux = c.ux, cells[k].uy = c.uy;
+  }
+  out.put(cells);
   out.put(covered_.equilibriumInterior);
   out.put(lastMach_);
 }

@@ -4,12 +4,16 @@
 // swap-removes so the arrays stay dense.
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
+#include "sandflow/core/byte_stream.hpp"
 #include "sandflow/dem/shape.hpp"
 
 namespace sf::dem {
+
+class MaterialTable;
 
 enum Hold : std::uint8_t { holdX = 1, holdY = 2, holdRotation = 4 };
 
@@ -35,6 +39,17 @@ struct Bodies {
   void push(int elementId);       // appends a slot with zeroed state
   void swapRemove(int slot);
   std::unordered_map<int, int> slotOf;
+
+  // Checkpoints: the ids, shapes and columns in slot order (part of
+  // "ELEM"). `load` fills empty bodies, refusing repeated or negative ids,
+  // short columns and values that are not finite; the caller checks the
+  // materials and flags and computes the masses.
+  void save(ByteWriter& out) const;
+  void load(ByteReader& in);
+  // Columns of one length, ids at their slots, a shape and material each,
+  // finite and positive masses that the holds and shapes follow, finite
+  // motion: what is wrong, in words.
+  std::vector<std::string> validate(const MaterialTable& materials) const;
 };
 
 }  // namespace sf::dem

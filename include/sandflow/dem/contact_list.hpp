@@ -26,11 +26,11 @@ struct ContactList {
   std::vector<int> idA, idB;  // element ids (stable across deletions)
   std::vector<std::uint8_t> discs;
   // Cached from the elements and materials until either changes (see
-  // Assembly::prepareContact): the pair's law in the step's table, the normal
+  // ContactSet::prepareContact): the pair's law in the step's table, the normal
   // damping's cached part (dampingPart: the coefficient c_n itself for the
   // linear law, its ratio solved for the step, or a fixed -damping; 2 zeta
   // sqrt(m*) for Hertz with a restitution, whose c_n is that times sqrt(kn),
-  // kn changing with the overlap; set for the step by Assembly::prepareDamping
+  // kn changing with the overlap; set for the step by ContactSet::prepareDamping
   // after each build and when the step changes), the smaller element's
   // contact size and the effective radius of curvature (Hertz).
   std::vector<int> law;
@@ -38,7 +38,7 @@ struct ContactList {
   // The normal force's mode, per contact so that the vector pass loads
   // rather than gathers it: the least normal force (0 compressive, -infinity
   // signed) and whether the normal dashpot is spanned (contact_force.hpp).
-  // Set with the damping part, for the step (Assembly::prepareDamping).
+  // Set with the damping part, for the step (ContactSet::prepareDamping).
   std::vector<double> normalFloor;
   std::vector<std::int32_t> spanned;
   ContactHistory history[2];
