@@ -88,6 +88,9 @@ void plotCsv(const std::string& program, const std::string& out, const std::stri
     const int xcol = columnIndex(from, spec.x.value_or(csv.names[x]), file, path);
     const int ycol = columnIndex(from, spec.y, file, path);
     add(from, file, xcol, ycol, spec.title, spec.style, spec.dash, spec.axis);
+    series.back().color = spec.color;
+    series.back().mark = spec.mark;
+    series.back().marksize = spec.marksize;
   }
   const std::string temporary = makeTemporary(out);
   try {

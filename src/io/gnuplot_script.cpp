@@ -11,9 +11,15 @@ namespace sf::io {
 namespace {
 
 constexpr const char* kKeyPositions[] = {"top left", "top right", "bottom left", "bottom right"};
+constexpr int kKeyOff = 4, kKeyOutside = 5;
 // Filled circle, square, triangles, diamond, then the same open: a series
-// drawn with points can be told apart without colour.
-constexpr int kPointTypes[] = {7, 5, 9, 11, 13, 6, 4, 8, 10, 12};
+// drawn with points can be told apart without colour. A -mark names one of
+// these (kPlotMarks' order), or a cross (2).
+constexpr int kPointTypes[] = {7, 5, 9, 11, 13, 6, 4, 8, 10, 12, 2};
+constexpr int kDefaultMarks = 10;
+// kPlotColors' colours.
+constexpr const char* kColorValues[] = {"#d62728", "#2ca02c", "#1f77b4", "#ff7f0e", "#8c8c8c",
+                                        "#000000", "#9467bd", "#8c564b", "#17becf"};
 // Reference lines are grey, so that they read as guides, not data.
 constexpr const char* kReferenceGreys[] = {"gray40", "gray65", "gray25", "gray80"};
 
@@ -136,12 +142,16 @@ std::string gnuplotScript(const std::vector<PlotSeries>& series, const std::stri
       s += "set y2label " + gnuplotString(*only[1]) + " noenhanced\n";
   }
   s += "set key noenhanced\n";
-  if (o.key && *o.key < 4)
+  if (o.key && *o.key < kKeyOff)
     s += std::string("set key ") + kKeyPositions[*o.key] + " box opaque\n";
+  else if (o.key && *o.key == kKeyOutside)
+    s += "set key outside right top box\n";
   else if (o.key || series.size() + o.references.size() == 1)
     s += "set key off\n";
-  if (o.logx) s += "set logscale x\n";
-  if (o.logy) s += "set logscale y\n";
+  // A log axis's numbers as %g writes them, 1×10^6 typeset (gnuplot's default
+  // "% h" writes every tic of a wide log axis with the most decimals, 0.00010).
+  if (o.logx) s += "set logscale x\nset format x '%h'\n";
+  if (o.logy) s += "set logscale y\nset format y '%h'\n";
   if (o.xreverse || o.xrange.lo || o.xrange.hi)
     s += "set xrange " + rangeText(o.xrange, o.xreverse) + "\n";
   if (o.yrange.lo || o.yrange.hi) s += "set yrange " + rangeText(o.yrange, false) + "\n";
@@ -153,12 +163,16 @@ std::string gnuplotScript(const std::vector<PlotSeries>& series, const std::stri
     const PlotSeries& one = series[k];
     if (k > 0) s += ", \\\n     ";
     // Few points get larger marks: a convergence study has five, a time series hundreds.
-    const std::string mark = " pt " + std::to_string(kPointTypes[k % std::size(kPointTypes)]) +
-                             (one.csv->rows.size() <= 50 ? " ps 1.2" : " ps 0.6");
+    const double size = one.marksize.value_or(one.csv->rows.size() <= 50 ? 1.2 : 0.6);
+    std::string mark = " pt " + std::to_string(kPointTypes[one.mark.value_or(int(k % kDefaultMarks))]) +
+                       " ps " + formatNumber(size);
+    if (one.color) mark += std::string(" lc rgb '") + kColorValues[*one.color] + "'";
     s += "$d" + std::to_string(k) + " using 1:2" + axes(one.axis) + " with ";
-    if (one.style == 0) s += "lines lw 1.5" + dash(one.dash);
+    const std::string color =
+        one.color ? std::string(" lc rgb '") + kColorValues[*one.color] + "'" : std::string();
+    if (one.style == 0) s += "lines lw 1.5" + dash(one.dash) + color;
     if (one.style == 1) s += "points" + mark;
-    if (one.style == 2) s += "linespoints lw 1.5" + dash(one.dash) + mark;
+    if (one.style == 2) s += "linespoints lw 1.5" + dash(one.dash) + mark;  // mark has the colour
     s += " title " + gnuplotString(one.title) + " noenhanced";
   }
   for (std::size_t k = 0; k < o.references.size(); ++k) {

@@ -26,6 +26,7 @@ constexpr std::string_view kLightMarker = "too light for the explicit coupling";
 constexpr std::string_view kOverlapMarker = "its own periodic image";
 constexpr std::string_view kCellReynoldsMarker = "cell Reynolds number";
 constexpr std::string_view kDemStepMarker = "over its accurate step";
+constexpr std::string_view kOutrunMarker = "faster than anything that drives it";
 
 }  // namespace
 
@@ -191,6 +192,36 @@ void Manager::checkDemAccuracy(double dt) {
        std::to_string(more) + " times smaller");
 }
 
+// A flow driven only by its walls and held solids (no forcing, no inlet, no
+// pressure side, no free element) stays about as slow as they are; twice the
+// fastest of them is going unstable (TRT at tau 10, lid 0.04 c:
+// docs/stability.md, problem 6). A free element's wake can outlive its
+// motion, so scenes with one are not judged.
+void Manager::checkOutrun() {
+  const lb::ResolvedLattice& p = lattice_->params();
+  if (!p.def.forcing.isZero() || warned(kOutrunMarker)) return;
+  const dem::Bodies& b = assembly_.bodies();
+  if (coupled_)
+    for (int s = 0; s < b.size(); ++s)
+      if (b.invMass[s] > 0 || b.invInertia[s] > 0) return;
+  double driver = coupled_ ? coupler_.fastest().mach : 0.0;
+  for (const lb::SideDef& side : p.def.sides) {
+    if (side.kind == lb::SideKind::velocity || side.kind == lb::SideKind::pressure) return;
+    if (side.kind == lb::SideKind::noslip)
+      driver = std::max(driver, p.velocityToLattice(side.velocity.norm()));
+  }
+  for (const lb::CircleObstacle& c : lattice_->circles())
+    driver = std::max(driver, p.velocityToLattice(c.velocity.norm() + std::abs(c.spin) * c.radius));
+  const double fluid = lattice_->lastStepMach();
+  // Under a billionth of the lattice speed both are rounding noise.
+  if (!(driver > 1e-9) || !(fluid > 2 * driver)) return;
+  warn("the fluid moves at " + rounded(fluid / driver, 3) + " times the fastest wall or " +
+       "solid at step " + std::to_string(steps_ + 1) + " (" + formatNumber(fluid) + " against " +
+       formatNumber(driver) + " of the lattice speed), " + std::string(kOutrunMarker) +
+       ": the flow is going unstable (tau " + rounded(p.tau, 6) +
+       "; a smaller tau, a finer lattice or a smaller timestep)");
+}
+
 // Near tau 0.5 the viscosity is too small for the grid: grid-scale
 // oscillations grow, unseen by the Mach check until the flow is several
 // times faster than anything drives it (docs/stability.md, tau).
@@ -326,6 +357,7 @@ void Manager::step() {
            ": the flow is no longer nearly incompressible (reduce the timestep or the forcing)");
     }
     checkCellReynolds();
+    checkOutrun();
   }
   const auto t1 = Clock::now();
   try {

@@ -45,7 +45,7 @@ const OptionSpec kPlotOptions[] = {
     {"-y2", "COLS", "columns to plot against a second vertical axis, on the right"},
     {"-series", "{YCOL ?-option value ...?}",
      "one more series, from this file or another (repeatable; -file -x -title -style -dash "
-     "-axis)"},
+     "-axis -color -mark -marksize)"},
     {"-reference", "{constant C | power C X0 P ?-option value ...?}",
      "a reference line, C or C (x/X0)^P (repeatable; -title -dash -axis)"},
     {"-title", "S", "title above the plot (default none)"},
@@ -57,14 +57,15 @@ const OptionSpec kPlotOptions[] = {
     {"-xreverse", "0|1", "horizontal axis from right to left"},
     {"-xrange", "{LO HI}", "range of the horizontal axis, * for automatic (default {* *})"},
     {"-yrange", "{LO HI}", "range of the vertical axis, * for automatic (default {* *})"},
-    {"-key", "topleft|topright|bottomleft|bottomright|off",
-     "where the key goes, boxed (default top right, none for a single series)"},
+    {"-key", "topleft|topright|bottomleft|bottomright|off|outside",
+     "where the key goes, boxed (default top right, none for a single series; outside: right "
+     "of the plot)"},
     {"-size", "{W H}", "image size in pixels (default {640 480})"},
     {"-style", "lines|points|linespoints", "how each column is drawn (default lines)"},
     {nullptr, nullptr, nullptr}};
 
 // Options of one -series value, after its column.
-enum SeriesOpt { sFile, sX, sTitle, sStyle, sDash, sAxis };
+enum SeriesOpt { sFile, sX, sTitle, sStyle, sDash, sAxis, sColor, sMark, sMarksize };
 const OptionSpec kSeriesOptions[] = {
     {"-file", "CSVFILE", "the CSV file it comes from (default the plot's CSVFILE)"},
     {"-x", "COL", "its horizontal column (default the one named like the plot's -x column)"},
@@ -72,6 +73,11 @@ const OptionSpec kSeriesOptions[] = {
     {"-style", "lines|points|linespoints", "how it is drawn (default the plot's -style)"},
     {"-dash", "solid|dashed|dotted|dashdot", "its line (default solid)"},
     {"-axis", "y|y2", "the vertical axis it is plotted against (default y)"},
+    {"-color", "red|green|blue|orange|grey|black|purple|brown|cyan",
+     "its colour (default the next of gnuplot's)"},
+    {"-mark", "circle|square|triangle|downtriangle|diamond|open...|cross",
+     "its mark when drawn with points (default the next: filled, then open)"},
+    {"-marksize", "S", "its mark's size, 0 < S <= 10 (default 1.2 up to 50 rows, else 0.6)"},
     {nullptr, nullptr, nullptr}};
 
 // Options of one -reference value, after its numbers.
@@ -85,8 +91,8 @@ const OptionSpec kReferenceOptions[] = {
 constexpr const char* kStyles[] = {"lines", "points", "linespoints", nullptr};
 constexpr const char* kDashes[] = {"solid", "dashed", "dotted", "dashdot", nullptr};
 constexpr const char* kAxes[] = {"y", "y2", nullptr};
-constexpr const char* kKeys[] = {"topleft",     "topright", "bottomleft",
-                                 "bottomright", "off",      nullptr};
+constexpr const char* kKeys[] = {"topleft", "topright", "bottomleft", "bottomright",
+                                 "off",     "outside",  nullptr};
 constexpr const char* kReferenceKinds[] = {"constant", "power", nullptr};
 constexpr const char* kReferenceForms[] = {"constant C", "power C X0 P"};
 constexpr int kReferenceNumbers[] = {1, 3};
@@ -139,6 +145,24 @@ bool parseSeries(Tcl_Interp* interp, Tcl_Obj* v, SeriesSpec& spec) {
         return getChoice(interp, value, "dash", kDashes, spec.dash);
       case sAxis:
         return getChoice(interp, value, "axis", kAxes, spec.axis);
+      case sColor:
+        if (!getChoice(interp, value, "color", io::kPlotColors, index)) return false;
+        spec.color = index;
+        return true;
+      case sMark:
+        if (!getChoice(interp, value, "mark", io::kPlotMarks, index)) return false;
+        spec.mark = index;
+        return true;
+      case sMarksize: {
+        double size = 0;
+        if (!getDouble(interp, value, "-marksize", size)) return false;
+        if (!(size > 0 && size <= 10))
+          return reject(interp, "VALUE MARKSIZE",
+                        "-marksize must be > 0 and at most 10, got \"" +
+                            std::string(Tcl_GetString(value)) + "\"");
+        spec.marksize = size;
+        return true;
+      }
     }
     return false;
   });

@@ -201,6 +201,26 @@ TEST_F(IoTest, GnuplotScriptQuotesTextAndChecksValues) {
             "leave it out)");
 }
 
+TEST_F(IoTest, GnuplotScriptGivesASeriesItsColourMarkAndSize) {
+  write("a.csv", "x,y\n1,2\n3,4\n");
+  const sf::io::CsvTable csv = sf::io::readCsv(file("a.csv"));
+  sf::io::PlotOptions o;
+  o.key = 5;  // outside
+  std::vector<sf::io::PlotSeries> series = {{&csv, "a.csv", 0, 1, "ok", 1, 0, 0},
+                                            {&csv, "a.csv", 0, 1, "bad", 1, 0, 0}};
+  series[0].color = 1;     // green
+  series[0].mark = 4;      // diamond
+  series[0].marksize = 2.5;
+  series[1].mark = 10;     // cross, the colour by order
+  const std::string script = sf::io::gnuplotScript(series, "x", o, "o.png");
+  EXPECT_NE(script.find("set key outside right top box\n"), std::string::npos);
+  EXPECT_NE(script.find("$d0 using 1:2 with points pt 13 ps 2.5 lc rgb '#2ca02c' title 'ok'"),
+            std::string::npos);
+  EXPECT_NE(script.find("$d1 using 1:2 with points pt 2 ps 1.2 title 'bad'"), std::string::npos);
+  EXPECT_EQ(std::string(sf::io::kPlotColors[1]), "green");
+  EXPECT_EQ(std::string(sf::io::kPlotMarks[10]), "cross");
+}
+
 TEST_F(IoTest, PlotIsRenamedIntoPlaceOnlyWhenGnuplotSucceeds) {
   write("a.csv", "step,time,y\n0,0,1\n1,1,2\n");
   // A stand-in that keeps the script and writes a placeholder to its output.

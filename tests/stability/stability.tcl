@@ -10,6 +10,19 @@
 #   timestep wall|pair|elastic|resting|stiffen             dt / dt_crit
 #   size  noflow|drag|wrap|settle                          disc diameter in cells
 #
+#   sandflow tests/stability/stability.tcl map CASE X Y
+#
+#   map (scripts/stability --maps: two settings at once; the cases above)
+#   CASE              X                    Y
+#   cavity-bgk        tau                  lid speed |u|/c      (tau cavity, lid at Y)
+#   cavity-trt        tau                  lid speed |u|/c
+#   settle-explicit   rho_s/rho_f          tau                  (density settle at tau Y)
+#   settle-implicit   rho_s/rho_f          tau
+#   pair              dt / dt_crit         restitution          (timestep pair, e = Y)
+#   resting           dt / dt_crit         restitution          (timestep resting, e = Y)
+#   size-settle       diameter in cells    tau                  (size settle at tau Y)
+#   disc              |u|/c                diameter in cells    (mach disc, Y across)
+#
 # Lattice units throughout (h = 1, dt = 1 unless the sweep is the timestep:
 # c = 1, so a speed is its Mach number u/c). One thread. The last line is
 #   RESULT<tab>OUTCOME<tab>MEASURE<tab>MESSAGE
@@ -21,9 +34,10 @@
 # warning or error). MEASURE is the case's error against its reference.
 # Warnings also go to stderr as they come.
 
-lassign $argv sweep case value
-if {$value eq "" || ![string is double -strict $value]} {
-    puts stderr "usage: sandflow tests/stability/stability.tcl SWEEP CASE VALUE"
+lassign $argv sweep case value value2
+if {$value eq "" || ![string is double -strict $value] ||
+    ($sweep eq "map" && ($value2 eq "" || ![string is double -strict $value2]))} {
+    puts stderr "usage: sandflow tests/stability/stability.tcl SWEEP CASE VALUE\n   or: sandflow tests/stability/stability.tcl map CASE X Y"
     exit 2
 }
 set pi [expr {acos(-1)}]
@@ -216,8 +230,7 @@ proc case_tau_poiseuille-trt {tau} { poiseuilleTau $tau {-collision trt -forcesc
 # answer, but no fluid may move faster than the lid. Garbage: the fluid at
 # over twice the lid's speed (a growing instability before the Mach limits
 # see it).
-proc cavityTau {tau options} {
-    set lid 0.02
+proc cavityTau {tau options {lid 0.02}} {
     do lattice create -size {32 32} -cells 32 -tau $tau -viscosity [nu $tau] -periodic {0 0} \
         -walls [list left noslip right noslip bottom noslip top [list noslip [list $lid 0]]] {*}$options
     set ::top 0.0
@@ -293,10 +306,14 @@ proc case_mach_inlet {ma} {
 # (64 x 32, tau 0.8), 300 steps: its drag (which sound waves crossing the
 # small periodic box make swing, at low speed even briefly forwards).
 # Garbage: the fluid faster than twice the disc.
-proc case_mach_disc {ma} {
-    do lattice create -size {64 32} -cells 64 -tau 0.8 -viscosity [nu 0.8] -periodic {1 1}
+proc case_mach_disc {ma {d 8}} {
+    # 64 x 32 up to 8 across (the Mach sweep's disc), else 8d x 4d
+    set H [expr {max(32, 4 * int(ceil($d)))}]
+    set W [expr {2 * $H}]
+    do lattice create -size [list $W $H] -cells $W -tau 0.8 -viscosity [nu 0.8] -periodic {1 1}
     do material create grain -density 3 -kn 1 -ks 1
-    set ::disc [do disc create -center {16.3 16.2} -radius 4 -material grain -fix {x y rot} -velocity [list $ma 0 0]]
+    set ::disc [do disc create -center [list [expr {$W / 4 + 0.3}] [expr {$H / 2 + 0.2}]] -radius [expr {$d / 2.0}] \
+                    -material grain -fix {x y rot} -velocity [list $ma 0 0]]
     go 300 1 [list apply {{ma} {
         set m [dict get [lattice info] mach]
         if {$m > 2 * $ma && $m > 1e-12} { garbage "the fluid moves at [fmt $m], over twice the disc's [fmt $ma]" }
@@ -312,8 +329,8 @@ proc case_mach_disc {ma} {
 # (the fluid inside it and the added mass outside). Garbage: a change of
 # velocity in one step over ten times g (1 + rho_f/rho_s) (a force ten times
 # its weight and buoyancy: the light-element oscillation growing).
-proc settle {ratio coupling g nudge} {
-    do lattice create -size {48 64} -cells 48 -tau 0.6 -viscosity [nu 0.6] -periodic {0 0} \
+proc settle {ratio coupling g nudge {tau 0.6}} {
+    do lattice create -size {48 64} -cells 48 -tau $tau -viscosity [nu $tau] -periodic {0 0} \
         -walls {left noslip right noslip bottom noslip top noslip}
     do sim configure -coupling $coupling -gravity [list 0 [expr {-$g}]]
     do material create grain -density $ratio -kn 1 -ks 1
@@ -334,9 +351,9 @@ proc settle {ratio coupling g nudge} {
     }} $limit]
     return $limit
 }
-proc settleCase {ratio coupling} {
+proc settleCase {ratio coupling {tau 0.6}} {
     set g 1e-4
-    settle $ratio $coupling $g 0
+    settle $ratio $coupling $g 0 $tau
     set a0 [expr {($ratio - 1) * (-$g) / ($ratio + 2)}]
     if {$::v50 eq {}} {
         set ::measure "no step 50"
@@ -445,8 +462,8 @@ proc case_timestep_stiffen {f} { impacts $f 0.5 stiffen }
 # A disc set down on a floor under gravity 10 (e 0.5), 200 dt_crit: it must
 # come to rest at the static overlap m g / kn. Garbage: kinetic energy above
 # m g r (what the fall from a radius up would give).
-proc case_timestep_resting {f} {
-    demScene 0.5
+proc case_timestep_resting {f {e 0.5}} {
+    demScene $e
     do sim configure -gravity {0 -10}
     set a [do disc create -center {0 1} -radius 1 -material m]
     do wall create -from {-5 0} -to {5 0} -material m
@@ -572,10 +589,10 @@ proc case_size_wrap {d} {
 # fluid is dragged along). The measure: its speed at the end, downwards.
 # Garbage: a jump of velocity in one step over ten times g (1 + rho_f/rho_s)
 # (as in the density sweep), or a disc that rises.
-proc case_size_settle {d} {
+proc case_size_settle {d {tau 1.0}} {
     set L [box $d]
     set g 1e-5
-    do lattice create -size [list $L $L] -cells $L -tau 1.0 -viscosity [nu 1.0] -periodic {1 1}
+    do lattice create -size [list $L $L] -cells $L -tau $tau -viscosity [nu $tau] -periodic {1 1}
     do sim configure -gravity [list 0 [expr {-$g}]]
     do material create grain -density 3 -kn 0.01 -ks 0.01
     set c [expr {$L / 2.0}]
@@ -591,6 +608,17 @@ proc case_size_settle {d} {
     set ::measure "falls at [fmt [expr {-$::last}]] after [dict get [sim info] step] steps"
 }
 
+# ---- maps: two settings at once (scripts/stability --maps) -------------------------
+# Each is a case above with a second setting; the garbage tests are theirs.
+proc case_map_cavity-bgk {tau lid} { cavityTau $tau {} $lid }
+proc case_map_cavity-trt {tau lid} { cavityTau $tau {-collision trt} $lid }
+proc case_map_settle-explicit {ratio tau} { settleCase $ratio explicit $tau }
+proc case_map_settle-implicit {ratio tau} { settleCase $ratio implicit $tau }
+proc case_map_pair {f e} { impacts $f $e pair }
+proc case_map_resting {f e} { case_timestep_resting $f $e }
+proc case_map_size-settle {d tau} { case_size_settle $d $tau }
+proc case_map_disc {ma d} { case_mach_disc $ma $d }
+
 # ---- the point ---------------------------------------------------------------------
 set proc case_${sweep}_$case
 if {[info commands $proc] eq ""} {
@@ -598,7 +626,7 @@ if {[info commands $proc] eq ""} {
     exit 2
 }
 sim configure -threads 1
-if {[catch {$proc $value} message opts] && $::refused eq {}} {
+if {[catch {$proc $value {*}[expr {$sweep eq "map" ? [list $value2] : {}}]} message opts] && $::refused eq {}} {
     # A fault of this driver, not an outcome.
     puts stderr [dict get $opts -errorinfo]
     exit 3

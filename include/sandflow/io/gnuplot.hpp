@@ -19,7 +19,16 @@ namespace sf::io {
 
 // Choices are indices, in the order the plot command lists them:
 // style lines|points|linespoints, dash solid|dashed|dotted|dashdot, axis y|y2,
-// key topleft|topright|bottomleft|bottomright|off, reference constant|power.
+// key topleft|topright|bottomleft|bottomright|off|outside, reference
+// constant|power, colour and mark as kPlotColors and kPlotMarks list them.
+
+// A series' colour and mark by name (the names the plot command takes).
+inline constexpr const char* kPlotColors[] = {"red",  "green",  "blue",  "orange", "grey",
+                                              "black", "purple", "brown", "cyan",   nullptr};
+inline constexpr const char* kPlotMarks[] = {"circle",       "square",       "triangle",
+                                             "downtriangle", "diamond",      "opencircle",
+                                             "opensquare",   "opentriangle", "opendowntriangle",
+                                             "opendiamond",  "cross",        nullptr};
 
 // An axis range; an empty bound is automatic.
 struct PlotRange {
@@ -30,7 +39,8 @@ struct PlotRange {
 struct PlotSeriesSpec {
   std::string y;
   std::optional<std::string> file, x, title;
-  std::optional<int> style;
+  std::optional<int> style, color, mark;
+  std::optional<double> marksize;
   int dash = 0, axis = 0;
 };
 
@@ -62,6 +72,8 @@ struct PlotSeries {
   int x, y;
   std::string title;
   int style, dash, axis;
+  std::optional<int> color = {}, mark = {};  // kPlotColors, kPlotMarks; default by order
+  std::optional<double> marksize = {};       // default by the number of rows
 };
 
 // A gnuplot string expression that stands for `text`, expanding nothing.

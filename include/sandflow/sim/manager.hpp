@@ -114,6 +114,7 @@ class Manager {
   void checkDemTimestep(double dt) const;
   void checkDemAccuracy(double dt);
   void checkCellReynolds();
+  void checkOutrun();
   void coupleBeforeFluid();
   void stepElements(double dt);
 
