@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "accuracy_preset.hpp"
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/session.hpp"
@@ -23,11 +24,12 @@ struct SimStage {
   Vec2 gravity = Vec2::Zero();
   double maxOverlap = 0.5;
   coupling::Settings coupled;
+  int accuracy = kCustomAccuracy;
 
   static SimStage of(const sim::Manager& m) {
-    return {m.timestep(), m.threads(), int(m.assembly().integrator),
-            m.substeps(), m.gravity(), m.assembly().maxOverlap,
-            m.coupling()};
+    return {m.timestep(), m.threads(),        int(m.assembly().integrator),
+            m.substeps(), m.gravity(),        m.assembly().maxOverlap,
+            m.coupling(), matchingAccuracy(m)};
   }
 };
 
@@ -131,8 +133,42 @@ const OptionTable<SimStage> kOptions{
          kCouplingNames},
         [](const SimStage& s) { return choiceValue(s.coupled.implicit ? 1 : 0); },
         [](SimStage& s, const OptionValue& v) { s.coupled.implicit = v.choice == 1; }},
+    Row{{"-accuracy",
+         "draft|normal|fine",
+         "a measured set of the accuracy knobs (docs/accuracy.md): the lattice's tau (its "
+         "viscosity kept), collision and forcing, and -solidratio, -coupling, -integrator and "
+         "-substeps; options given with it win; custom: none of the three (setting it changes "
+         "nothing)",
+         ValueKind::choice,
+         "",
+         {},
+         kAccuracyNames},
+        [](const SimStage& s) { return choiceValue(s.accuracy); },
+        [](SimStage& s, const OptionValue& v) { s.accuracy = v.choice; }},
 };
-enum { kTimestep = 0, kThreads, kGravity, kIntegrator, kMaxOverlap, kSolidRatio, kSubsteps };
+enum {
+  kTimestep = 0,
+  kThreads,
+  kGravity,
+  kIntegrator,
+  kMaxOverlap,
+  kSolidRatio,
+  kSubsteps,
+  kBuoyancy,
+  kShare,
+  kInterior,
+  kCoupling,
+  kAccuracy
+};
+
+// The preset's step settings onto the stage, except those given with it.
+void stagePreset(SimStage& stage, std::vector<bool>& given) {
+  const AccuracyPreset& p = accuracyPreset(stage.accuracy);
+  if (!given[kSolidRatio]) stage.coupled.subcells = p.subcells;
+  if (!given[kCoupling]) stage.coupled.implicit = p.implicit;
+  if (!given[kIntegrator]) stage.integrator = int(p.integrator);
+  if (!given[kSubsteps]) stage.substeps = p.substeps, given[kSubsteps] = true;
+}
 
 // The settings of a new session, for help's and `sim options`' defaults.
 const SimStage& defaults() {
@@ -160,13 +196,29 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
   // Stage every value, validate, then commit: a refused option changes nothing.
   std::vector<bool> given;
   if (!kOptions.apply(interp, objc, objv, 1, stage, &given)) return TCL_ERROR;
+  const bool preset = given[kAccuracy] && stage.accuracy != kCustomAccuracy;
+  if (preset) stagePreset(stage, given);
   return guarded(interp, [&] {
-    // The only step that can refuse, before anything changes.
+    // The only steps that can refuse, before anything else changes: the
+    // preset's lattice (its tau sets the timestep), then the stepping; a
+    // refused stepping puts the lattice back.
+    std::optional<lb::LatticeDef> before;
+    if (preset && m.hasLattice()) {
+      before = m.lattice().params().def;
+      try {
+        m.reconfigureLattice(presetLattice(m.lattice().params(), accuracyPreset(stage.accuracy)));
+      } catch (const Error& e) {
+        fail(interp, e);
+        noteOptionOnce(interp, "-accuracy");
+        return TCL_ERROR;
+      }
+    }
     if (given[kTimestep] || given[kSubsteps]) {
       try {
         m.setStepping(given[kTimestep] ? std::optional<double>(stage.timestep) : std::nullopt,
                       given[kSubsteps] ? std::optional<int>(stage.substeps) : std::nullopt);
       } catch (const Error& e) {
+        if (before) m.reconfigureLattice(*before);
         fail(interp, e);
         noteOptionOnce(interp, given[kSubsteps] && !given[kTimestep] ? "-substeps" : "-timestep");
         return TCL_ERROR;
