@@ -7,7 +7,8 @@
 //
 //   sandflow_coupled_bench ?--steps N? ?--threads T? ?--reps R? ?--quick? ?--profile?
 //
-// --profile runs only the coupled scene with exact solid ratios, for a profiler.
+// --profile runs only the coupled scene with exact solid ratios and prints its
+// profile, stage by stage (the Manager's, as `sim info` shows it).
 //
 // Prints plain tables and the targets' verdicts (scripts/bench --coupled runs
 // it). Each time is the best of R repetitions. The bare kernels and the
@@ -127,26 +128,50 @@ struct Split {
 
 Split timeSteps(sim::Manager& m, int steps) {
   for (int k = 0; k < 3; ++k) m.step();  // warm up
-  const lb::Lattice::Times l0 = m.lattice().times();
-  const coupling::CouplingTimes c0 = m.coupler().times();
-  const sim::Manager::Times m0 = m.times();
+  const Profile p0 = m.profile();
   const auto t0 = Clock::now();
   for (int k = 0; k < steps; ++k) m.step();
   Split s;
   s.total = seconds(t0) / steps;
-  const lb::Lattice::Times& l = m.lattice().times();
-  s.bulk = (l.bulk - l0.bulk) / steps;
-  s.covered = (l.covered - l0.covered) / steps;
-  s.fill = (l.fill - l0.fill) / steps;
-  s.coverage = (m.coupler().times().coverage - c0.coverage) / steps;
-  s.forces = (m.coupler().times().forces - c0.forces) / steps;
-  s.measure = (m.coupler().times().measure - c0.measure) / steps;
-  s.sort = (m.coupler().times().sort - c0.sort) / steps;
-  s.cellList = (m.coupler().times().cells - c0.cells) / steps;
-  s.dem = (m.times().elements - m0.elements) / steps;
+  const Profile& p = m.profile();
+  auto per = [&](std::initializer_list<Stage> stages) {
+    double sum = 0;
+    for (Stage x : stages) sum += p.seconds(x) - p0.seconds(x);
+    return sum / steps;
+  };
+  s.bulk = per({Stage::latticeBulk});
+  s.covered = per({Stage::latticeCovered});
+  s.fill = per({Stage::latticeFill});
+  s.measure = per({Stage::coverageMeasure});
+  s.sort = per({Stage::coverageSort});
+  s.cellList = per({Stage::coverageCells});
+  s.coverage = s.measure + s.sort + s.cellList;
+  s.forces = per({Stage::fluidForces});
+  s.dem = per({Stage::demPairs, Stage::demContacts, Stage::demSums, Stage::demIntegrate});
   s.mlups = double(m.lattice().nodes()) / s.total / 1e6;
   s.cells = m.coupler().coveredCells();
   return s;
+}
+
+// The profile of `steps` steps after a warm-up, stage by stage (--profile).
+void printProfile(sim::Manager& m, int steps) {
+  for (int k = 0; k < 3; ++k) m.step();  // warm up
+  m.profile().reset();
+  const auto t0 = Clock::now();
+  for (int k = 0; k < steps; ++k) m.step();
+  const double wall = seconds(t0);
+  const Profile& p = m.profile();
+  std::printf("%-16s %10s %7s %7s\n", "stage", "ms/step", "steps", "share");
+  for (int k = 0; k < kStageCount; ++k) {
+    const StageTime& t = p[Stage(k)];
+    if (t.steps == 0) continue;
+    std::printf("%-16s %10.3f %7lld %6.1f%%\n", std::string(stageName(Stage(k))).c_str(),
+                t.seconds / steps * 1e3, t.steps, t.seconds / wall * 100);
+  }
+  const double rest = wall - p.totalSeconds();
+  std::printf("%-16s %10.3f %7d %6.1f%%\n", "(Manager's own)", rest / steps * 1e3, steps,
+              rest / wall * 100);
+  std::printf("%-16s %10.3f %7d %6.1f%%\n", "step", wall / steps * 1e3, steps, 100.0);
 }
 
 // Cylindrical Couette (thesis case B) at 80 cells across, one solid-ratio
@@ -189,11 +214,11 @@ std::pair<double, double> couette(int subcells) {
 // One Manager step, timed: its wall time, also added to `wall`, and the part
 // of it inside the kernels added to `inside` (the rest is the Manager's own code).
 double timedManagerStep(sim::Manager& m, double& wall, double& inside) {
-  const double before = m.times().fluid + m.times().elements;
+  const double before = m.profile().totalSeconds();
   const auto t0 = Clock::now();
   m.step();
   const double t = seconds(t0);
-  wall += t, inside += m.times().fluid + m.times().elements - before;
+  wall += t, inside += m.profile().totalSeconds() - before;
   return t;
 }
 
@@ -255,13 +280,11 @@ int main(int argc, char** argv) {
     sim::Manager m;
     m.setThreads(threads);
     m.createLattice(channel(n));
-    addDiscs(m, n, 0.10, 11);
-    const Split t = timeSteps(m, steps);
+    const int discs = addDiscs(m, n, 0.10, 11);
     std::printf(
-        "total %.2f bulk %.2f covered %.2f fill %.2f ratio %.2f (measure %.2f sort %.2f cells "
-        "%.2f) forces %.2f DEM %.2f ms/step\n",
-        t.total * 1e3, t.bulk * 1e3, t.covered * 1e3, t.fill * 1e3, t.coverage * 1e3,
-        t.measure * 1e3, t.sort * 1e3, t.cellList * 1e3, t.forces * 1e3, t.dem * 1e3);
+        "coupled: %dx%d lattice, %d discs of radius 8 covering ~10%%, %d threads, %d steps\n", n, n,
+        discs, threads, steps);
+    printProfile(m, steps);
     return 0;
   }
   bench::measureBandwidth(512, 6, {threads});
@@ -277,7 +300,7 @@ int main(int argc, char** argv) {
   // 1. Fluid only: one lattice, stepped bare and through the Manager in
   //    turn (one object, so that where its pages fall does not differ).
   // Also the Manager's own code alone: its steps' wall time less the time it
-  // spends inside the kernels (its Times), which does not depend on the noise.
+  // spends inside the kernels (its profile), which does not depend on the noise.
   double bare = 1e300, managed = 1e300, fluidOverhead = 0, managerWall = 0, managerInside = 0;
   const int fluidQuartets = quick ? 11 : 101;
   {

@@ -11,10 +11,7 @@
 namespace sf::coupling {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+using Clock = Profile::Clock;
 
 Grid gridOf(const lb::Lattice& lattice) {
   const lb::ResolvedLattice& p = lattice.params();
@@ -30,6 +27,17 @@ Grid gridOf(const lb::Lattice& lattice) {
 
 bool covers(const dem::Bodies& b, int s) {
   return !b.ghost[s] && b.shape[s]->type() != dem::ShapeType::wall;
+}
+
+// True when a solid of this centre and reach lies wholly beyond a side that
+// is not periodic, a cell clear of it: it covers no cell (elements that
+// wait above a lattice cost no coverage pass).
+bool beyondWalls(const Grid& g, const Vec2& x, double reach) {
+  const Vec2 lo = g.origin - Vec2::Constant(g.h);
+  const Vec2 hi = g.origin + Vec2((g.nx + 1) * g.h, (g.ny + 1) * g.h);
+  const bool outX = x.x() + reach < lo.x() || x.x() - reach > hi.x();
+  const bool outY = x.y() + reach < lo.y() || x.y() - reach > hi.y();
+  return (!g.periodicX && outX) || (!g.periodicY && outY);
 }
 
 // Static buoyancy of slot s on the immersed area: the element's own area when
@@ -51,9 +59,13 @@ Vec2 buoyancyOf(const dem::Bodies& b, int s, double submerged, const lb::Lattice
 
 bool Coupler::needed(const lb::Lattice& lattice, const dem::Assembly& assembly) {
   if (!lattice.circles().empty()) return true;
+  // Elements all beyond the walls: no pass at all (their fluid force is zero
+  // either way), so that they cost what they cost without a lattice.
+  const Grid grid = gridOf(lattice);
   const dem::Bodies& b = assembly.bodies();
   for (int s = 0; s < b.size(); ++s)
-    if (covers(b, s)) return true;
+    if (!beyondWalls(grid, b.x[s], b.reach[s]) && covers(b, s))
+      return true;  // the cheap test first
   return false;
 }
 
@@ -124,6 +136,7 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     c.id = b.id[s], c.x = b.x[s], c.angle = b.angle[s], c.area = shape.area();
     c.reach = b.reach[s], c.radius = 0, c.outside = false;
     c.cells.clear(), c.runs.clear(), c.overlap = 0;
+    if (beyondWalls(grid, b.x[s], b.reach[s])) continue;  // no cells: spares the footprint
     if (const auto f = footprintOf(shape, b.x[s], b.angle[s])) measure(c, *f, b.x[s]);
   }
   for (std::size_t k = 0; k < circles.size(); ++k) {
@@ -145,8 +158,8 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
       overlap_.obstacle = circles[o - elements_.size()].id;
   }
 
-  const auto t1 = Clock::now();
-  times_.measure += std::chrono::duration<double>(t1 - t0).count();
+  Profile& profile = profile_.get();
+  const auto t1 = profile.lap(Stage::coverageMeasure, t0);
   // 2. The pieces (each solid's cells, solid by solid: the order the force
   //    sums keep) in node order, and each node's pieces made a cell.
   const int owners = n + int(circles.size());
@@ -161,8 +174,7 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     runOwner_.insert(runOwner_.end(), c.runs.size(), o);
   }
   groupRuns();
-  const auto t2 = Clock::now();
-  times_.sort += std::chrono::duration<double>(t2 - t1).count();
+  const auto t2 = profile.lap(Stage::coverageSort, t1);
   // Rigid velocities (vx, vy, w) of the owners: elements as they are, or
   // solved with the exchange they will cause; circles as prescribed.
   velocity_.resize(n);
@@ -201,10 +213,9 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   }
   fastest_.mach = std::sqrt(fastest2);
   cells_ = total;
-  times_.cells += since(t2);
   // Ours now holds the old list; the new one ascends by node (groupRuns).
   lattice.swapCoveredCells(cells, settings.equilibriumInterior, true);
-  times_.coverage += since(t0);
+  profile.lap(Stage::coverageCells, t2);
 }
 
 [[gnu::always_inline]] inline Coupler::Motion Coupler::ownerMotion(
@@ -603,7 +614,7 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
   for (int s = 0; s < b.size(); ++s)
     b.buoyancy[s] =
         settings.buoyancy ? buoyancyOf(b, s, submerged[s], lattice, gravity) : Vec2::Zero();
-  times_.forces += since(t0);
+  profile_.get().lap(Stage::fluidForces, t0);
 }
 
 void Coupler::clear(dem::Assembly& assembly) {

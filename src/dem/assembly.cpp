@@ -11,10 +11,7 @@
 namespace sf::dem {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+using Clock = Profile::Clock;
 
 }  // namespace
 
@@ -143,6 +140,8 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
   const int n = b.size();
   const std::vector<Vec2>& vel = useHalfVelocity ? b.vHalf : b.v;
   const std::vector<double>& omega = useHalfVelocity ? b.wHalf : b.w;
+  Profile& profile = profile_.get();
+  auto t0 = Clock::now();
   {
     Vec2* __restrict f = b.force.data();
     double* __restrict t = b.torque.data();
@@ -155,11 +154,11 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
       t[s] = appliedTorque[s] + fluidTorque[s];
     }
   }
+  t0 = profile.lap(Stage::demSums, t0);
   // Each contact's damping and normal-force mode for the step (law_columns.cpp).
   contacts_.prepareDamping(b, materials_, generation_, dt);
-  auto t0 = Clock::now();
   const std::size_t bad = contacts_.evaluate(b, vel, omega, dt, maxOverlap, threads);
-  times_.contactPass += since(t0);
+  t0 = profile.lap(Stage::demContacts, t0);
   const ContactList& l = contacts_.list();
   if (bad < l.size())  // the history stays as it was (the step does not commit)
     throw Error("UNSTABLE OVERLAP",
@@ -168,10 +167,8 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
                     formatNumber(maxOverlap) +
                     " of the smaller one's size: reduce the timestep or stiffen the material");
 
-  t0 = Clock::now();
   scratchTouch_.assign(n, 0);  // for checkSpeeds
   contacts_.sumOnto(b, scratchTouch_.data());
-  times_.sums += since(t0);
   if (!bonds_.empty()) bonds_.addForces(b, time_, dt, vel, omega);
   const Vec2* force = b.force.data();
   const double* torque = b.torque.data();
@@ -181,6 +178,7 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
   for (int s = 0; s < n; ++s)
     probe +=
         (force[s].x() - force[s].x()) + (force[s].y() - force[s].y()) + (torque[s] - torque[s]);
+  profile.lap(Stage::demSums, t0);
   if (probe != 0 || std::isnan(probe))
     for (int s = 0; s < n; ++s)
       if (!b.force[s].allFinite() || !std::isfinite(b.torque[s]))
@@ -275,6 +273,8 @@ void Assembly::commitStep() {
 // integration, the clock and the sources' clones.
 void Assembly::step(double dt, const Vec2& gravity) {
   if (empty()) return;
+  Profile& profile = profile_.get();
+  if (profile_.owned()) profile.beginStep();
   auto t0 = Clock::now();
   Bodies& b = bodies_;
   const int n = b.size();
@@ -285,16 +285,19 @@ void Assembly::step(double dt, const Vec2& gravity) {
   std::vector<Vec2> x0, v0;
   std::vector<double> a0, w0;
   if (movesFirst) x0 = b.x, v0 = b.vHalf, a0 = b.angle, w0 = b.wHalf;
-  if (movesFirst && anyUnstarted()) startForces(dt, gravity);
+  if (movesFirst && anyUnstarted()) {
+    t0 = profile.lap(Stage::demIntegrate, t0);
+    startForces(dt, gravity);  // its forces record their stages
+    t0 = Clock::now();
+  }
   detail::preForce(integrator, motion(), n, dt, threads);
+  t0 = profile.lap(Stage::demIntegrate, t0);
   contacts_.update(b, materials_, generation_, vectorPass);
-  times_.sort += since(t0);
-  t0 = Clock::now();
+  profile.lap(Stage::demPairs, t0);
   spareForce_.resize(std::size_t(n)), spareTorque_.resize(std::size_t(n));
   b.force.swap(spareForce_), b.torque.swap(spareTorque_);
   try {
-    computeForces(dt, gravity, integrator != Integrator::euler);
-    times_.narrow += since(t0);
+    computeForces(dt, gravity, integrator != Integrator::euler);  // records its stages
     t0 = Clock::now();
     checkSpeeds(dt);
   } catch (...) {
@@ -308,7 +311,7 @@ void Assembly::step(double dt, const Vec2& gravity) {
   time_ += dt;
   if (!sources_.empty())
     sources_.spawn(b, time_, [this](ElementDef d) { return add(std::move(d)); });
-  times_.integrate += since(t0);
+  profile.lap(Stage::demIntegrate, t0);
 }
 
 }  // namespace sf::dem

@@ -98,34 +98,37 @@ StepContext Lattice::context() const {
 }
 
 StepStats Lattice::step(double machLimit) {
-  using Clock = std::chrono::steady_clock;
-  const auto t0 = Clock::now();
+  Profile& profile = profile_.get();
+  if (profile_.owned()) profile.beginStep();
+  const auto t0 = Profile::Clock::now();
   const StepContext ctx = context();
   StepStats stats;
-  // The covered cells in the bulk's sweep when they can be, else after it.
+  // The covered cells in the bulk's sweep when they can be, else after it
+  // (then the sweep times them, and the bulk's time is the rest). None: the
+  // plain sweep (solids all beyond the lattice's walls).
   const FluidNode& fluid = static_cast<const FluidNode&>(*kinds_.front());
-  const bool together = fluid.sweepsWith(covered_);
+  const bool together = !covered_.cells.empty() && fluid.sweepsWith(covered_);
   double coveredSeconds = 0;
   for (const auto& k : kinds_)
     stats.merge(k.get() == &fluid && together
                     ? fluid.streamCollideWith(ctx, covered_, coveredSeconds)
                     : k->streamCollide(ctx));
-  auto t1 = Clock::now();
+  const auto t1 = Profile::Clock::now();
   // Over the bulk's values: the bulk's mass already holds these nodes.
   if (!together) stats.maxU2 = std::max(stats.maxU2, covered_.streamCollide(ctx).maxU2);
-  const auto t2 = Clock::now();
-  if (together)
-    t1 -=
-        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(coveredSeconds));
+  const auto t2 = Profile::Clock::now();
+  const double bulk = std::chrono::duration<double>(t1 - t0).count();
+  profile.add(Stage::latticeBulk, std::max(0.0, bulk - coveredSeconds));
+  if (!covered_.cells.empty())
+    profile.add(Stage::latticeCovered,
+                std::chrono::duration<double>(t2 - t1).count() + std::min(bulk, coveredSeconds));
   if (!std::isfinite(stats.mass) || !(stats.maxU2 <= machLimit * machLimit))
     reportInstability(stats, machLimit);
   std::swap(f_, g_);
   for (const auto& k : kinds_) k->fill(f_, threads_);
   lastMach_ = std::sqrt(stats.maxU2);
   canUndo_ = true;
-  times_.bulk += std::chrono::duration<double>(t1 - t0).count();
-  times_.covered += std::chrono::duration<double>(t2 - t1).count();
-  times_.fill += std::chrono::duration<double>(Clock::now() - t2).count();
+  profile.lap(Stage::latticeFill, t2);
   return stats;
 }
 

@@ -3,7 +3,6 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -332,9 +331,13 @@ void Manager::step() {
     return Error(e.code(), "step " + std::to_string(steps_ + 1) +
                                " (t = " + formatNumber(time_ + dt) + "): " + e.what());
   };
-  using Clock = std::chrono::steady_clock;
-  auto t0 = Clock::now();
+  // Attached afresh each step: the lattice and the elements may have been
+  // replaced (a new lattice, a reset, a checkpoint) since the last.
+  profile_.beginStep();
+  assembly_.attachProfile(&profile_);
+  coupler_.attachProfile(&profile_);
   if (lattice_) {
+    lattice_->attachProfile(&profile_);
     checkCollision();
     const bool couple = coupling::Coupler::needed(*lattice_, assembly_);
     try {
@@ -359,7 +362,6 @@ void Manager::step() {
     checkCellReynolds();
     checkOutrun();
   }
-  const auto t1 = Clock::now();
   try {
     stepElements(demDt);
   } catch (const Error& e) {
@@ -367,9 +369,6 @@ void Manager::step() {
     throw stamp(e);
   }
   if (lattice_) lattice_->advanceCircles(dt);
-  const auto t2 = Clock::now();
-  times_.fluid += std::chrono::duration<double>(t1 - t0).count();
-  times_.elements += std::chrono::duration<double>(t2 - t1).count();
   time_ += dt;
   ++steps_;
 }
@@ -382,7 +381,7 @@ void Manager::reset() {
   substeps_ = 1;
   solidMachWarned_ = false;
   underResolvedWarned_.clear();
-  times_ = Times();
+  profile_.reset();
   assembly_ = dem::Assembly();
   assembly_.threads = threads_;
   gravity_ = Vec2::Zero();

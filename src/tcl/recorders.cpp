@@ -59,12 +59,15 @@ int recordStep(Session& s) {
   // One recorder failing does not cost the others this step's record; the
   // first failure is the Tcl error.
   int code = TCL_OK;
+  const auto t0 = Profile::Clock::now();
+  bool due = false;  // timed (Stage::outputs) only in the steps that record
   for (std::size_t k = 0; k < s.recorders.size();) {
     Recorder& r = *s.recorders[k];
     if (step % r.every() != 0) {
       ++k;
       continue;
     }
+    due = true;
     try {
       asError([&] { r.record(s); });
       ++k;
@@ -74,6 +77,7 @@ int recordStep(Session& s) {
       s.recorders.erase(s.recorders.begin() + std::ptrdiff_t(k));
     }
   }
+  if (due) s.manager.profile().lap(Stage::outputs, t0);
   return code;
 }
 

@@ -35,8 +35,24 @@ struct RunningFlag {
   ~RunningFlag() { s.running = was; }
 };
 
+// Adds to `stage`, as it goes out of scope, the time it lived that no other
+// stage took: a script's own time, less the snapshots, outputs or steps it ran.
+struct OwnTime {
+  Session& s;
+  Stage stage;
+  Profile::Clock::time_point t0 = Profile::Clock::now();
+  double before = s.manager.profile().totalSeconds();
+  ~OwnTime() {
+    Profile& p = s.manager.profile();
+    const double inside = p.totalSeconds() - before;
+    p.add(stage, std::max(0.0, std::chrono::duration<double>(Profile::Clock::now() - t0).count() -
+                                   inside));
+  }
+};
+
 // Evaluates the tick script; TCL_BREAK asks the run to pause.
 int tick(Session& s) {
+  const OwnTime timed{s, Stage::tick};
   Tcl_Obj* script = s.runTick;
   Tcl_IncrRefCount(script);  // the tick may replace itself
   s.inTick = true;
@@ -115,6 +131,7 @@ int parseRun(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], RunRequest& r)
 
 // What is due every K steps: the -every script, or the run's snapshot.
 int everyK(Session& s, const RunRequest& r) {
+  const OwnTime timed{s, Stage::scripts};
   Tcl_Obj* script = r.script;
   if (!script) {
     char step[32];
@@ -146,6 +163,20 @@ int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   s.runTotal = r.steps;
   ++s.runs;
   using Clock = std::chrono::steady_clock;
+  // The run's profile, however it ends (sim info passes). A run in an -every
+  // script is part of that script.
+  struct Record {
+    Session& s;
+    const bool outer;
+    const Tcl_WideInt& done;
+    const Clock::time_point start = Clock::now();
+    ~Record() {
+      if (outer)
+        s.lastRun = sim::recordRun(
+            s.manager, std::chrono::duration<double>(Clock::now() - start).count(), done);
+    }
+  } record{s, !running.was, done};
+  if (record.outer) s.manager.profile().reset();
   auto lastTick = Clock::now();
   for (; done < r.steps; ++done) {
     const auto t0 = Clock::now();
@@ -197,6 +228,7 @@ int Reset(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) 
   if (refuseWhileRunning(s) != TCL_OK) return TCL_ERROR;
   const int code = closeRecorders(s, nullptr);
   s.manager.reset();
+  s.lastRun = sim::RunRecord();
   return code;
 }
 

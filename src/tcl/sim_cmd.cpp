@@ -1,4 +1,4 @@
-// sim configure|cget|info|help
+// sim configure|cget|info|hash|check|estimate|options|help
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -7,6 +7,7 @@
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/session.hpp"
+#include "sim_profile.hpp"
 
 namespace sf::tcl {
 namespace {
@@ -260,7 +261,8 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
     Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
-  const sim::Manager& m = sessionOf(data).manager;
+  const Session& session = sessionOf(data);
+  const sim::Manager& m = session.manager;
   const bool lattice = m.hasLattice();
   const double mach = lattice ? m.lattice().maxMach() : 0.0;
   const double tau = lattice ? m.lattice().params().tau : 0.0;
@@ -296,7 +298,8 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
                                        m.coupled() ? m.lattice().coveredCells().size() : 0))},
                        {"fluidforce", newVec2(fluidForce)},
                        {"fluidtorque", newDouble(fluidTorque)},
-                       {"substeps", Tcl_NewIntObj(m.substeps())}}));
+                       {"substeps", Tcl_NewIntObj(m.substeps())},
+                       {"passes", passesDict(session)}}));
   return TCL_OK;
 }
 
@@ -337,8 +340,10 @@ int SimHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
                                       {"configure ?-option value ...?", "cget -option",
                                        "info    -> dict time step timestep tau mach elements "
                                        "contacts bonds broken nodes mlups stable covered "
-                                       "fluidforce ...",
+                                       "fluidforce ... passes",
                                        "hash    -> the state's CRC-32, 8 hex digits",
+                                       "estimate ?N? -> dict steps seconds perstep basis "
+                                       "basissteps passes: the next N steps' time (100)",
                                        "check   -> the invariants that fail (empty: all hold)",
                                        "options -> the options as dicts: name type unit min max "
                                        "choices default help ...",
@@ -356,6 +361,7 @@ void registerSimCommands(Tcl_Interp* interp, Session* session) {
                 {"info", SimInfo},
                 {"hash", SimHash},
                 {"check", SimCheck},
+                {"estimate", SimEstimate},
                 {"options", SimOptions},
                 {"help", SimHelp}},
                session);

@@ -129,6 +129,15 @@ int Snapshot(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
                 "snapshot writes PNG pictures: FILE must end in .png, got \"" + path + "\"");
   render::ViewOptions v = s.view;
   if (!parseViewOptions(interp, objc, objv, 2, v, nullptr)) return TCL_ERROR;
+  const auto t0 = Profile::Clock::now();
+  // A run's pictures are one of its stages (sim info passes).
+  struct Timed {
+    Session& s;
+    Profile::Clock::time_point t0;
+    ~Timed() {
+      if (s.running) s.manager.profile().lap(Stage::pictures, t0);
+    }
+  } timed{s, t0};
   return guarded(interp, [&] {
     requireConfined(s, path);
     const render::Image image = takePicture(s.manager, v);

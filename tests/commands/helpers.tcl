@@ -65,7 +65,7 @@ proc collectWarnings {} {
 # command changed nothing.
 proc sceneState {} {
     set state [list sim [sim configure] \
-            simInfo [dict remove [sim info] mlups threads]]
+            simInfo [dict remove [sim info] mlups threads passes]]
     if {![catch {lattice configure} options]} {
         lappend state lattice $options \
                 latticeInfo [dict remove [lattice info] threads] \

@@ -432,12 +432,55 @@ TEST(Coupling, UnderResolvedElementWarnsOnce) {
   EXPECT_NE(w[0].find("under two lattice cells"), std::string::npos);
 }
 
+// A disc wholly above a channel's top wall covers nothing (and is skipped
+// before its footprint); one across the wall still covers its cells below it.
+TEST(Coupling, ElementBeyondAWallCoversNoCell) {
+  auto covered = [](bool beyond) {
+    sim::Manager m;
+    lb::LatticeDef def;
+    def.size = Vec2(40, 20);
+    def.cells = 40;
+    def.tau = 0.8;
+    def.timestep = 1.0;
+    m.createLattice(def);  // periodic in x, walls at y = 0 and 20
+    const int mat = test::softMaterial(m, 2.0);
+    test::addDisc(m, mat, Vec2(20, 19), 3.0);
+    if (beyond) test::addDisc(m, mat, Vec2(10, 24.5), 3.0);
+    m.step();
+    return m.coupler().coveredCells();
+  };
+  const std::size_t straddling = covered(false);
+  EXPECT_GT(straddling, 0u);
+  EXPECT_EQ(covered(true), straddling);
+}
+
+TEST(Coupling, ElementsAllBeyondTheWallsPayNoCouplingPass) {
+  sim::Manager m;
+  lb::LatticeDef def;
+  def.size = Vec2(40, 20);
+  def.cells = 40;
+  def.tau = 0.8;
+  def.timestep = 1.0;
+  m.createLattice(def);
+  const int mat = test::softMaterial(m, 2.0);
+  test::addDisc(m, mat, Vec2(10, 30), 3.0, Vec2(0, -0.05));  // falls towards the lattice
+  m.step();
+  EXPECT_FALSE(m.coupled());
+  EXPECT_EQ(m.profile()[Stage::coverageMeasure].steps, 0);
+  EXPECT_EQ(m.assembly().bodies().fluidForce[0], Vec2::Zero());
+  // Once it reaches a cell of the lattice's wall side, the coupling runs.
+  for (int k = 0; k < 200 && !m.coupled(); ++k) m.step();
+  EXPECT_TRUE(m.coupled());
+  EXPECT_LT(m.assembly().bodies().x[0].y() - 3.0, 21.0 + 1e-9);
+}
+
 TEST(Coupling, SceneWithoutSolidsPaysNoCouplingPass) {
   sim::Manager m;
   m.createLattice(test::periodicSquare(1.0, 32, 0.01));
   for (int k = 0; k < 10; ++k) m.step();
   EXPECT_FALSE(m.coupled());
-  EXPECT_EQ(m.coupler().times().coverage, 0.0);
+  EXPECT_EQ(m.profile()[Stage::coverageMeasure].steps, 0);
+  EXPECT_EQ(m.profile()[Stage::fluidForces].steps, 0);
   EXPECT_EQ(m.lattice().coveredCells().size(), 0u);
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sandflow/core/profile.hpp"
 #include "sandflow/coupling/coverage.hpp"
 #include "sandflow/dem/assembly.hpp"
 #include "sandflow/lb/lattice.hpp"
@@ -44,16 +45,10 @@ struct SelfOverlap {
   int count = 0;
 };
 
-struct CouplingTimes {
-  double coverage = 0, forces = 0;  // seconds, accumulated
-  // coverage = measure (the solids' cells and ratios) + sort (pieces in node
-  // order) + cells (the lattice's list with solid velocities) + the rest
-  double measure = 0, sort = 0, cells = 0;
-};
-
 class Coupler {
  public:
-  // True when the scene has anything that covers lattice cells.
+  // True when the scene has anything that may cover lattice cells (an element
+  // wholly beyond a side that is not periodic does not).
   static bool needed(const lb::Lattice& lattice, const dem::Assembly& assembly);
 
   // Covers the lattice for the next step. Only what moved since the last call is
@@ -76,7 +71,10 @@ class Coupler {
   // of the two over its free degrees of freedom. 0 when held or uncovered.
   double explicitFeedback(const lb::Lattice& lattice, const dem::Bodies& b, int s) const;
   std::size_t coveredCells() const { return cells_; }
-  const CouplingTimes& times() const { return times_; }
+  // The profile prepare and collect record into (Stage::coverage*,
+  // Stage::fluidForces): the owner's, once attached, else its own.
+  void attachProfile(Profile* profile) { profile_.attach(profile); }
+  const Profile& profile() const { return profile_.get(); }
 
  private:
   // A run: consecutive lattice nodes that one solid covers, cells
@@ -185,7 +183,7 @@ class Coupler {
   std::size_t cells_ = 0;
   SolidSpeed fastest_;
   SelfOverlap overlap_;
-  CouplingTimes times_;
+  ProfileLink profile_;
 };
 
 }  // namespace sf::coupling

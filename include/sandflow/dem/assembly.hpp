@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sandflow/core/byte_stream.hpp"
+#include "sandflow/core/profile.hpp"
 #include "sandflow/dem/bodies.hpp"
 #include "sandflow/dem/bond_set.hpp"
 #include "sandflow/dem/contact_set.hpp"
@@ -29,15 +30,6 @@ struct Motion;
 enum class Integrator { central = 0, euler = 1, verlet = 2 };
 // Null-terminated: also the table of "sim configure -integrator".
 inline constexpr const char* integratorNames[] = {"central", "euler", "verlet", nullptr};
-
-// Seconds spent, summed over steps: pair upkeep (skin check and pair builds),
-// contact forces (all of computeForces) and, within them, the pass over the
-// contacts (narrow phase and law) and the sums onto the elements; integration
-// with its checks.
-struct StepTimes {
-  double sort = 0, narrow = 0, integrate = 0;
-  double contactPass = 0, sums = 0;
-};
 
 class Assembly {
  public:
@@ -126,7 +118,10 @@ class Assembly {
   Vec2 contactForce(int slot) const { return contacts_.forceOn(slot); }
   double kineticEnergy() const;
   Vec2 momentum() const;
-  const StepTimes& times() const { return times_; }
+  // The profile its steps record into (Stage::dem*): the owner's, once
+  // attached, else its own.
+  void attachProfile(Profile* profile) { profile_.attach(profile); }
+  const Profile& profile() const { return profile_.get(); }
   long long broadPhaseBuilds() const { return contacts_.builds(); }
 
   // The whole state, bit for bit (checkpoints): materials, settings, every
@@ -166,7 +161,7 @@ class Assembly {
   BondSet bonds_;
   SourceSet sources_;
   PlateServo plates_;
-  StepTimes times_;
+  ProfileLink profile_;
   std::uint64_t generation_ = 1;  // bumped by every change to masses, holds or the element set
   mutable std::uint64_t criticalAt_ = 0;
   mutable std::uint64_t criticalMaterials_ = 0;  // materials_.version() then

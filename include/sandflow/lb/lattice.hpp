@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sandflow/core/byte_stream.hpp"
+#include "sandflow/core/profile.hpp"
 #include "sandflow/lb/lattice_def.hpp"
 #include "sandflow/lb/node.hpp"
 
@@ -71,10 +72,10 @@ class Lattice {
   // Returns to the state before the last step (once; until anything else changes
   // the populations), for a coupled step whose solid part fails.
   void undoStep();
-  struct Times {
-    double bulk = 0, covered = 0, fill = 0;  // seconds, accumulated over steps
-  };
-  const Times& times() const { return times_; }
+  // The profile its steps record into (Stage::lattice*): the owner's, once
+  // attached, else its own.
+  void attachProfile(Profile* profile) { profile_.attach(profile); }
+  const Profile& profile() const { return profile_.get(); }
   void setThreads(int threads);
   int threads() const { return threads_; }
 
@@ -179,7 +180,7 @@ class Lattice {
   int threads_ = 1;
   double lastMach_ = 0.0;
   bool canUndo_ = false;
-  Times times_;
+  ProfileLink profile_;
 };
 
 }  // namespace sf::lb

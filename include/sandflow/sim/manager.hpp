@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "sandflow/core/profile.hpp"
 #include "sandflow/coupling/coupler.hpp"
 #include "sandflow/dem/assembly.hpp"
 #include "sandflow/lb/lattice.hpp"
@@ -78,10 +79,12 @@ class Manager {
   std::vector<std::string> takeWarnings();
   const std::vector<std::string>& warnings() const { return warningLog_; }
 
-  struct Times {
-    double fluid = 0, elements = 0;  // seconds, accumulated over steps
-  };
-  const Times& times() const { return times_; }
+  // Where the steps' time went, stage by stage, since the profile was last
+  // reset (the run command resets it at each run's start and adds its
+  // own stages: outputs, pictures, scripts, other). The lattice, coupler
+  // and elements record into it.
+  Profile& profile() { return profile_; }
+  const Profile& profile() const { return profile_; }
 
   // The whole scene, bit for bit (checkpoints): settings, clock, warnings
   // given, the lattice and the elements. `loadState` fills a fresh Manager
@@ -133,7 +136,7 @@ class Manager {
   int substeps_ = 1;
   bool solidMachWarned_ = false;
   std::set<int> underResolvedWarned_;
-  Times times_;
+  Profile profile_;
   std::vector<std::string> pendingWarnings_, warningLog_;
 };
 

@@ -8,6 +8,7 @@
 
 #include "sandflow/render/draw_list.hpp"
 #include "sandflow/render/view_options.hpp"
+#include "sandflow/sim/estimate.hpp"
 #include "sandflow/sim/manager.hpp"
 #include "sandflow/tcl/recorder.hpp"
 
@@ -27,6 +28,9 @@ struct Session {
   bool inTick = false;                  // its tick is serving the GUI's events
   long long runDone = 0, runTotal = 0;  // the run's progress, for the GUI's bar
   long long runs = 0;                   // runs started (the GUI tells one from the next)
+  // The last run's stages and scene (sim info passes, sim estimate); a run
+  // in an -every script is part of that script's time, not a run of its own.
+  sim::RunRecord lastRun;
   // While `checkpoint load` starts the checkpoint's recordings again: its
   // step, from which a CSV series continues its file (else -1).
   long long resumeStep = -1;
