@@ -1,6 +1,7 @@
 // The bodies in a checkpoint and their invariants.
 #include <cmath>
 
+#include "column_bytes.hpp"
 #include "sandflow/dem/bodies.hpp"
 #include "sandflow/dem/material.hpp"
 #include "sandflow/geometry/vec2_bytes.hpp"
@@ -9,17 +10,7 @@
 namespace sf::dem {
 namespace {
 
-// A column read back must hold one value per element.
-template <class T>
-void getColumn(ByteReader& in, std::vector<T>& column, std::size_t n, const char* what) {
-  in.get(column, what);
-  if (column.size() != n) ByteReader::fail(std::string("its column of ") + what + " is short");
-}
-
-void getColumn(ByteReader& in, std::vector<Vec2>& column, std::size_t n, const char* what) {
-  getVec2s(in, column, what);
-  if (column.size() != n) ByteReader::fail(std::string("its column of ") + what + " is short");
-}
+using detail::getColumn;
 
 bool allFinite(const std::vector<double>& column) {
   for (double v : column)

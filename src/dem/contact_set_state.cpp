@@ -2,21 +2,14 @@
 #include <cmath>
 #include <set>
 
+#include "column_bytes.hpp"
 #include "sandflow/dem/contact_set.hpp"
 #include "sandflow/dem/narrow_phase.hpp"
 #include "sandflow/geometry/vec2_bytes.hpp"
 
 namespace sf::dem {
-namespace {
 
-// A column read back must hold one value per contact.
-template <class T>
-void getColumn(ByteReader& in, std::vector<T>& column, std::size_t n, const char* what) {
-  in.get(column, what);
-  if (column.size() != n) ByteReader::fail(std::string("its column of ") + what + " is short");
-}
-
-}  // namespace
+using detail::getColumn;
 
 void ContactSet::save(ByteWriter& out, const MaterialTable& materials,
                       std::uint64_t generation) const {

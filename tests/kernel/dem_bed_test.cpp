@@ -3,6 +3,7 @@
 
 #include <random>
 
+#include "dem_helpers.hpp"
 #include "sandflow/dem/assembly.hpp"
 
 namespace sf::dem {
@@ -15,15 +16,7 @@ TEST(DemBed, SettlesAndTheWallsCarryTheWeight) {
   m.restitution = 0.3;
   m.friction = 0.5;
   const int sand = a.materials().add(m);
-  auto wall = [&](Vec2 p, Vec2 q) {
-    ElementDef d;
-    d.shape = std::make_unique<Wall>((q - p).norm(), 1e-3);
-    d.material = sand;
-    d.x = 0.5 * (p + q);
-    d.angle = std::atan2((q - p).y(), (q - p).x());
-    d.hold = holdX | holdY | holdRotation;
-    return a.add(std::move(d));
-  };
+  auto wall = [&](Vec2 p, Vec2 q) { return test::addWall(a, p, q, sand); };
   const double W = 0.02;
   std::vector<int> walls = {wall({0, 0}, {W, 0}), wall({0, 0}, {0, 0.05}), wall({W, 0}, {W, 0.05})};
   std::mt19937 rng(5);

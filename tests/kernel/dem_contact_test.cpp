@@ -6,6 +6,7 @@
 #include <numbers>
 #include <random>
 
+#include "dem_helpers.hpp"
 #include "sandflow/core/error.hpp"
 #include "sandflow/dem/assembly.hpp"
 
@@ -310,15 +311,7 @@ Rebound oblique(double vn, double vt, double e, double mu) {
   d.x = Vec2(0, r + 1e-6);
   d.v = Vec2(vt, -vn);
   const int id = a.add(std::move(d));
-  const double dt = a.criticalTimestep() / 50;
-  bool touched = false;
-  for (int s = 0; s < 100000; ++s) {
-    a.step(dt, Vec2::Zero());
-    if (a.touchingCount() > 0)
-      touched = true;
-    else if (touched)
-      break;
-  }
+  test::runUntilApart(a, a.criticalTimestep() / 50);
   const int s = a.slot(id);
   return {a.bodies().v[s].x(), -a.bodies().w[s] * r};
 }

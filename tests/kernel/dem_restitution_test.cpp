@@ -8,6 +8,7 @@
 #include <numbers>
 #include <vector>
 
+#include "dem_helpers.hpp"
 #include "sandflow/dem/assembly.hpp"
 
 namespace sf::dem {
@@ -42,17 +43,7 @@ int addFloor(Assembly& a, int material) {
   return a.add(std::move(w));
 }
 
-void runUntilApart(Assembly& a, double dt) {
-  bool touched = false;
-  for (int s = 0; s < 100000; ++s) {
-    a.step(dt, Vec2::Zero());
-    if (a.touchingCount() > 0)
-      touched = true;
-    else if (touched)
-      return;
-  }
-  FAIL() << "the impacts did not end";
-}
+using test::runUntilApart;
 
 // Rebounds of `phases` impacts, each beginning at its own point of a step:
 // the first overlap is phi (closing speed x dt), phi = (j + 1/2)/phases.

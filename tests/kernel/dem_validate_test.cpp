@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 
+#include "dem_helpers.hpp"
 #include "sandflow/dem/assembly.hpp"
 
 namespace sf::dem {
@@ -25,15 +26,7 @@ struct Scene {
     m.restitution = 0.3;
     m.friction = 0.4;
     const int sand = a.materials().add(m);
-    auto wall = [&](Vec2 p, Vec2 q) {
-      ElementDef d;
-      d.shape = std::make_unique<Wall>((q - p).norm(), 1e-3);
-      d.material = sand;
-      d.x = 0.5 * (p + q);
-      d.angle = std::atan2((q - p).y(), (q - p).x());
-      d.hold = holdX | holdY | holdRotation;
-      return a.add(std::move(d));
-    };
+    auto wall = [&](Vec2 p, Vec2 q) { return test::addWall(a, p, q, sand); };
     auto disc = [&](Vec2 x, double r) {
       ElementDef d;
       d.shape = std::make_unique<Disc>(r);
