@@ -452,7 +452,7 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
 void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Settings& settings,
                       const Vec2& gravity) {
   const auto t0 = Clock::now();
-  dem::Bodies& b = assembly.bodies();
+  const dem::Bodies& b = assembly.bodies();
   const lb::ResolvedLattice& p = lattice.params();
   // Lattice momentum per step to force per unit thickness: h^2 rho h/dt per dt.
   const double scale = p.h * p.h * p.h / (p.dt * p.dt);
@@ -502,7 +502,7 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
       }
     }
     if (o < n) {
-      b.fluidForce[o] = force, b.fluidTorque[o] = torque, submerged[o] = area;
+      assembly.setFluidLoad(o, force, torque), submerged[o] = area;
     } else {
       circleForce[o - n] = force, circleTorque[o - n] = torque;
     }
@@ -510,8 +510,9 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
   for (std::size_t k = 0; k < circles.size(); ++k)
     lattice.setCircleLoad(k, circleForce[k], circleTorque[k], circles_[k].cells.size());
   for (int s = 0; s < b.size(); ++s)
-    b.buoyancy[s] =
-        settings.buoyancy ? detail::buoyancyOf(b, s, submerged[s], lattice, gravity) : Vec2::Zero();
+    assembly.setBuoyancy(s, settings.buoyancy
+                                ? detail::buoyancyOf(b, s, submerged[s], lattice, gravity)
+                                : Vec2::Zero());
   profile_.get().lap(Stage::fluidForces, t0);
 }
 
@@ -530,9 +531,7 @@ void Coupler::clear(dem::Assembly& assembly) {
   epsSum_.clear();
   cells_ = 0;
   fastest_ = SolidSpeed{};
-  dem::Bodies& b = assembly.bodies();
-  for (int s = 0; s < b.size(); ++s)
-    b.fluidForce[s] = Vec2::Zero(), b.fluidTorque[s] = 0, b.buoyancy[s] = Vec2::Zero();
+  assembly.clearFluidLoads();
 }
 
 }  // namespace sf::coupling

@@ -121,6 +121,12 @@ double Assembly::measureCriticalTimestep() const {
   return 2.0 * std::sqrt(mMin / kMax);
 }
 
+void Assembly::clearFluidLoads() {
+  for (int s = 0; s < bodies_.size(); ++s)
+    bodies_.fluidForce[s] = Vec2::Zero(), bodies_.fluidTorque[s] = 0,
+    bodies_.buoyancy[s] = Vec2::Zero();
+}
+
 double Assembly::kineticEnergy() const {
   double e = 0;
   for (int s = 0; s < bodies_.size(); ++s)

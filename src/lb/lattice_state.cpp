@@ -65,7 +65,8 @@ void Lattice::saveState(ByteWriter& out) const {
   // `interior` zeroed: it is never written, and would make equal scenes'
   // checkpoints and hashes differ.
   std::vector<CoveredCell> cells(covered_.cells.size());
-  std::memset(static_cast<void*>(cells.data()), 0, cells.size() * sizeof(CoveredCell));
+  if (!cells.empty())  // data() may be null
+    std::memset(static_cast<void*>(cells.data()), 0, cells.size() * sizeof(CoveredCell));
   for (std::size_t k = 0; k < cells.size(); ++k) {
     const CoveredCell& c = covered_.cells[k];
     cells[k].node = c.node, cells[k].interior = c.interior, cells[k].eps = c.eps;

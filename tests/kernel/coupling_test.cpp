@@ -168,12 +168,12 @@ TEST(Coupling, FirstCoupledStepOfANewElementFeelsNoKick) {
     m.assembly().integrator = integrator;
     const std::uint8_t hold = held ? dem::holdX | dem::holdY | dem::holdRotation : 0;
     test::addDisc(m, test::softMaterial(m, density), Vec2(0.503, 0.502), r, Vec2::Zero(), 0, hold);
-    dem::Bodies& b = m.assembly().bodies();
-    if (held) {  // two steps held, then let go as "element configure -fix {}" does
+    const dem::Bodies& b = m.assembly().bodies();
+    if (held) {  // two steps held, then let go by "element configure -fix {}"
       m.step(), m.step();
-      b.hold[0] = 0, b.started[0] = 0;
-      m.assembly().updateMass(0);
-      m.assembly().touched();
+      dem::ElementEdit letGo;
+      letGo.hold = 0;
+      m.assembly().configure(b.id[0], letGo);
     }
     m.step();
     return b.fluidForce[0];

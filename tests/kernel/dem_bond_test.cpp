@@ -36,7 +36,7 @@ TEST(DemBond, PulledApartBreaksAtItsStrengthOnce) {
   const double strength = 2.0;  // N per unit thickness
   Pair p(strength);
   // Pull the right disc with a slowly growing force; hold the left one.
-  Bodies& b = p.a.bodies();
+  Bodies& b = p.a.bodiesForTesting();
   b.hold[p.a.slot(p.left)] = holdX | holdY | holdRotation;
   p.a.updateMass(p.a.slot(p.left));
   const double dt = p.a.criticalTimestep() / 20;
@@ -59,7 +59,7 @@ TEST(DemBond, PulledApartBreaksAtItsStrengthOnce) {
 
 TEST(DemBond, ShearedBondBreaksInShear) {
   Pair p(1e9, 1.0);
-  Bodies& b = p.a.bodies();
+  Bodies& b = p.a.bodiesForTesting();
   b.hold[p.a.slot(p.left)] = holdX | holdY | holdRotation;
   p.a.updateMass(p.a.slot(p.left));
   b.hold[p.a.slot(p.right)] = holdRotation;

@@ -91,7 +91,7 @@ TEST(DemValidate, HealthySceneAfterStepsUnderEveryIntegrator) {
 TEST(DemValidate, BodiesCatchANanMassAndAnIdAwayFromItsSlot) {
   Scene s(Integrator::central);
   s.run(20);
-  Bodies& b = s.a.bodies();
+  Bodies& b = s.a.bodiesForTesting();
   b.mass[5] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_TRUE(mentions(s.a.validate(), "element " + std::to_string(b.id[5]) + " has mass nan"))
       << joined(s.a.validate());
@@ -113,7 +113,7 @@ TEST(DemValidate, BodiesCatchANanMassAndAnIdAwayFromItsSlot) {
 TEST(DemValidate, ContactSetCatchesBrokenSlotsIdsCopiesAndNormals) {
   Scene s(Integrator::central);
   s.run(2000);
-  const Bodies& b = s.a.bodies();
+  const Bodies& b = s.a.bodiesForTesting();
   const std::size_t k = touchingContact(s.a.contactSet());
   ASSERT_LT(k, s.a.contactList().size());
   EXPECT_TRUE(s.a.contactSet().validate(b).empty());
@@ -167,7 +167,7 @@ TEST(DemValidate, BondSetCatchesABondToAMissingElement) {
 TEST(DemValidate, SourcesAndPlatesCatchBrokenFlags) {
   Scene s(Integrator::central);
   s.run(20);
-  Bodies& b = s.a.bodies();
+  Bodies& b = s.a.bodiesForTesting();
   const int source = s.a.slot(s.source);
   b.ghost[source] = 0;
   EXPECT_TRUE(

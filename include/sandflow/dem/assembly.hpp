@@ -44,8 +44,18 @@ class Assembly {
   int nextId() const;
   int slot(int id) const;  // throws if no such element
   bool empty() const { return bodies_.size() == 0; }
-  Bodies& bodies() { return bodies_; }
+  // The columns are read by all and written only by dem, through the calls
+  // below, and by the coupling through the fluid-load ones.
   const Bodies& bodies() const { return bodies_; }
+  // The fluid's force and torque on slot s for the next step, and its static
+  // buoyancy (the coupling's output; slots may be set from several threads).
+  void setFluidLoad(int s, const Vec2& force, double torque) {
+    bodies_.fluidForce[s] = force, bodies_.fluidTorque[s] = torque;
+  }
+  void setBuoyancy(int s, const Vec2& buoyancy) { bodies_.buoyancy[s] = buoyancy; }
+  void clearFluidLoads();
+  // For tests that break an invariant on purpose (dem_validate_test).
+  Bodies& bodiesForTesting() { return bodies_; }
   // Recomputes mass and inertia of a slot after its shape or material changed.
   void updateMass(int slot);
   // Throws sf::Error ("VALUE MASS") unless an element of this shape and
