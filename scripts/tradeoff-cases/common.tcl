@@ -29,7 +29,9 @@ namespace eval tradeoff {
 
 proc tradeoff::options {rows} {
     variable o
-    set o [::sf::scriptOptions [concat $rows {
+    # -help makes scriptOptions print and end its caller: here the lambda,
+    # so that this script ends too.
+    set o [apply {{spec} {::sf::scriptOptions $spec}} [concat $rows {
         {problem.arg    {}  "problem name written in the row"}
         {knob.arg       {}  "knob name written in the row"}
         {setting.arg    {}  "setting label written in the row"}
@@ -37,6 +39,7 @@ proc tradeoff::options {rows} {
         {threads.arg    1   "threads of the step"}
         {out.arg        {}  "the one-row CSV file (default: standard output)"}
     }]]
+    if {"-help" in $::argv || "-?" in $::argv} { exit 0 }
     sim configure -threads [dict get $o -threads]
     return $o
 }
