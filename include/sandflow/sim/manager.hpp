@@ -128,6 +128,7 @@ class Manager {
   int threads_ = 1;
   double time_ = 0.0;
   long long steps_ = 0;
+  long long latticeBorn_ = -1000000000;  // steps_ when the lattice was made (checkOutrun)
   double mlups_ = 0.0;
   bool machWarned_ = false;
   coupling::Settings coupling_;
