@@ -214,8 +214,17 @@ void Manager::checkOutrun() {
     if (side.kind == lb::SideKind::noslip)
       driver = std::max(driver, p.velocityToLattice(side.velocity.norm()));
   }
-  for (const lb::CircleObstacle& c : lattice_->circles())
-    driver = std::max(driver, p.velocityToLattice(c.velocity.norm() + std::abs(c.spin) * c.radius));
+  // A circular wall's solid turns rigidly: out to its rim, or, for one that
+  // holds the fluid inside it, out to the lattice's farthest corner (the
+  // covered nodes there move with it, and the fastest fluid counts them).
+  const Vec2 lo = p.def.origin, hi = lo + Vec2(p.nx * p.h, p.ny * p.h);
+  for (const lb::CircleObstacle& c : lattice_->circles()) {
+    double reach = c.radius;
+    if (c.outside)
+      for (const Vec2& corner : {lo, hi, Vec2(lo.x(), hi.y()), Vec2(hi.x(), lo.y())})
+        reach = std::max(reach, (corner - c.centre).norm());
+    driver = std::max(driver, p.velocityToLattice(c.velocity.norm() + std::abs(c.spin) * reach));
+  }
   const double fluid = lattice_->lastStepMach();
   // Under a billionth of the lattice speed both are rounding noise.
   if (!(driver > 1e-9) || !(fluid > 2 * driver)) return;
