@@ -67,7 +67,6 @@ int BondSet::make(const Bodies& B, const MaterialTable& materials, int a, int b,
                                   " cannot be bonded: they do not touch");
   const Material &ma = materials[B.material[a]], &mb = materials[B.material[b]];
   Bond x;
-  x.id = nextId_++;
   x.idA = idA;
   x.idB = idB;
   x.anchorA = rotated(pa - B.x[a], -B.angle[a]);
@@ -76,6 +75,13 @@ int BondSet::make(const Bodies& B, const MaterialTable& materials, int a, int b,
   if ((pb - pa).norm() > 1e-12 * n.norm()) n = pb - pa;
   x.normal0 = n.normalized();
   x.length = (pb - pa).dot(x.normal0);
+  // Elements 1e300 apart: the distance overflows (found by the fuzzer).
+  if (!x.anchorA.allFinite() || !x.anchorB.allFinite() || !x.normal0.allFinite() ||
+      !std::isfinite(x.length))
+    throw Error("VALUE BOND", "elements " + std::to_string(idA) + " and " + std::to_string(idB) +
+                                  " cannot be bonded: they are too far apart for the bond's "
+                                  "length to be finite");
+  x.id = nextId_++;
   x.angleA0 = B.angle[a];
   x.angleB0 = B.angle[b];
   x.stiffness = stiffness >= 0 ? stiffness : std::min(ma.bondStiffness, mb.bondStiffness);
