@@ -164,7 +164,8 @@ std::string gnuplotScript(const std::vector<PlotSeries>& series, const std::stri
     if (k > 0) s += ", \\\n     ";
     // Few points get larger marks: a convergence study has five, a time series hundreds.
     const double size = one.marksize.value_or(one.csv->rows.size() <= 50 ? 1.2 : 0.6);
-    std::string mark = " pt " + std::to_string(kPointTypes[one.mark.value_or(int(k % kDefaultMarks))]) +
+    std::string mark = " pt " +
+                       std::to_string(kPointTypes[one.mark.value_or(int(k % kDefaultMarks))]) +
                        " ps " + formatNumber(size);
     if (one.color) mark += std::string(" lc rgb '") + kColorValues[*one.color] + "'";
     s += "$d" + std::to_string(k) + " using 1:2" + axes(one.axis) + " with ";

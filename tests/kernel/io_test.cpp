@@ -208,10 +208,10 @@ TEST_F(IoTest, GnuplotScriptGivesASeriesItsColourMarkAndSize) {
   o.key = 5;  // outside
   std::vector<sf::io::PlotSeries> series = {{&csv, "a.csv", 0, 1, "ok", 1, 0, 0},
                                             {&csv, "a.csv", 0, 1, "bad", 1, 0, 0}};
-  series[0].color = 1;     // green
-  series[0].mark = 4;      // diamond
+  series[0].color = 1;  // green
+  series[0].mark = 4;   // diamond
   series[0].marksize = 2.5;
-  series[1].mark = 10;     // cross, the colour by order
+  series[1].mark = 10;  // cross, the colour by order
   const std::string script = sf::io::gnuplotScript(series, "x", o, "o.png");
   EXPECT_NE(script.find("set key outside right top box\n"), std::string::npos);
   EXPECT_NE(script.find("$d0 using 1:2 with points pt 13 ps 2.5 lc rgb '#2ca02c' title 'ok'"),

@@ -23,12 +23,11 @@ namespace sf::io {
 // constant|power, colour and mark as kPlotColors and kPlotMarks list them.
 
 // A series' colour and mark by name (the names the plot command takes).
-inline constexpr const char* kPlotColors[] = {"red",  "green",  "blue",  "orange", "grey",
+inline constexpr const char* kPlotColors[] = {"red",   "green",  "blue",  "orange", "grey",
                                               "black", "purple", "brown", "cyan",   nullptr};
-inline constexpr const char* kPlotMarks[] = {"circle",       "square",       "triangle",
-                                             "downtriangle", "diamond",      "opencircle",
-                                             "opensquare",   "opentriangle", "opendowntriangle",
-                                             "opendiamond",  "cross",        nullptr};
+inline constexpr const char* kPlotMarks[] = {
+    "circle",     "square",       "triangle",         "downtriangle", "diamond", "opencircle",
+    "opensquare", "opentriangle", "opendowntriangle", "opendiamond",  "cross",   nullptr};
 
 // An axis range; an empty bound is automatic.
 struct PlotRange {
