@@ -202,8 +202,7 @@ void Manager::checkDemAccuracy(double dt) {
 // from a checkpoint counts as started.
 void Manager::checkOutrun() {
   const lb::ResolvedLattice& p = lattice_->params();
-  if (!p.def.forcing.isZero() || warned(kOutrunMarker)) return;
-  if (steps_ - latticeBorn_ < 4LL * std::max(p.nx, p.ny)) return;
+  if (!p.def.forcing.isZero() || steps_ - latticeBorn_ < 4LL * std::max(p.nx, p.ny)) return;
   const dem::Bodies& b = assembly_.bodies();
   if (coupled_)
     for (int s = 0; s < b.size(); ++s)
@@ -227,7 +226,8 @@ void Manager::checkOutrun() {
   }
   const double fluid = lattice_->lastStepMach();
   // Under a billionth of the lattice speed both are rounding noise.
-  if (!(driver > 1e-9) || !(fluid > 2 * driver)) return;
+  // (The log is searched last: this runs every step.)
+  if (!(driver > 1e-9) || !(fluid > 2 * driver) || warned(kOutrunMarker)) return;
   warn("the fluid moves at " + rounded(fluid / driver, 3) + " times the fastest wall or " +
        "solid at step " + std::to_string(steps_ + 1) + " (" + formatNumber(fluid) + " against " +
        formatNumber(driver) + " of the lattice speed), " + std::string(kOutrunMarker) +

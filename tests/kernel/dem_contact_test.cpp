@@ -24,14 +24,7 @@ Material material(double e, double mu, double k = 1e5) {
   return m;
 }
 
-int disc(Assembly& a, Vec2 x, double r, Vec2 v = Vec2::Zero(), int material = 1) {
-  ElementDef d;
-  d.shape = std::make_unique<Disc>(r);
-  d.material = material;
-  d.x = x;
-  d.v = v;
-  return a.add(std::move(d));
-}
+using test::addDisc;
 
 int wall(Assembly& a, Vec2 from, Vec2 to, int material = 1) {
   ElementDef d;
@@ -54,8 +47,8 @@ Impact headOn(double e, Integrator integrator = Integrator::central, int stepsPe
   a.integrator = integrator;
   a.materials().add(material(e, 0.0));
   const double r = 1e-3, v = 0.1;
-  const int i = disc(a, Vec2(-r - 1e-5, 0), r, Vec2(v, 0));
-  const int j = disc(a, Vec2(r + 1e-5, 0), r, Vec2(-v, 0));
+  const int i = addDisc(a, Vec2(-r - 1e-5, 0), r, Vec2(v, 0));
+  const int j = addDisc(a, Vec2(r + 1e-5, 0), r, Vec2(-v, 0));
   const double m = a.bodies().mass[0], meff = m / 2, k = 1e5;
   const double dt = pi * std::sqrt(meff / k) / stepsPerContact;
   Impact out{0, 0, 0};
@@ -99,7 +92,7 @@ Roll incline(double theta, double mu) {
   const double r = 1e-3, g = 9.81;
   wall(a, Vec2(-1, 0), Vec2(1, 0));
   const Vec2 gravity(g * std::sin(theta), -g * std::cos(theta));
-  const int d = disc(a, Vec2(0, r - 2650 * pi * r * r * g * std::cos(theta) / 1e6), r);
+  const int d = addDisc(a, Vec2(0, r - 2650 * pi * r * r * g * std::cos(theta) / 1e6), r);
   const double dt = 1e-6;
   for (int s = 0; s < 20000; ++s) a.step(dt, gravity);  // settle onto the floor
   const int slot = a.slot(d);
@@ -139,8 +132,8 @@ double boxEnergyDrift(double fraction, long steps) {
   std::uniform_real_distribution<double> u(-1, 1);
   for (int i = 0; i < 5; ++i)
     for (int j = 0; j < 5; ++j)
-      disc(a, Vec2((i + 0.5) * L / 5, (j + 0.5) * L / 5), 0.8e-3 + 0.3e-3 * u(rng),
-           Vec2(u(rng), u(rng)) * 0.2);
+      addDisc(a, Vec2((i + 0.5) * L / 5, (j + 0.5) * L / 5), 0.8e-3 + 0.3e-3 * u(rng),
+              Vec2(u(rng), u(rng)) * 0.2);
   const double dt = a.criticalTimestep() * fraction;
   const double e0 = a.kineticEnergy();
   double worst = 0;
@@ -165,8 +158,8 @@ TEST(DemContact, FreeClusterConservesMomentum) {
   std::uniform_real_distribution<double> u(-1, 1);
   for (int i = 0; i < 6; ++i)
     for (int j = 0; j < 6; ++j)
-      disc(a, Vec2(i * 1.9e-3, j * 1.9e-3), 0.8e-3 + 0.2e-3 * u(rng),
-           Vec2(-i + 2.5 + u(rng), -j + 2.5 + u(rng)) * 0.05);
+      addDisc(a, Vec2(i * 1.9e-3, j * 1.9e-3), 0.8e-3 + 0.2e-3 * u(rng),
+              Vec2(-i + 2.5 + u(rng), -j + 2.5 + u(rng)) * 0.05);
   auto angular = [&] {
     const Bodies& b = a.bodies();
     double l = 0;
@@ -186,8 +179,8 @@ TEST(DemContact, FreeClusterConservesMomentum) {
 TEST(DemContact, CriticalTimestepUsesLightestElementAndStiffestMaterial) {
   Assembly a;
   a.materials().add(material(0.5, 0.5, 4e5));
-  disc(a, Vec2(0, 0), 1e-3);
-  disc(a, Vec2(1, 0), 0.5e-3);
+  addDisc(a, Vec2(0, 0), 1e-3);
+  addDisc(a, Vec2(1, 0), 0.5e-3);
   const double m = 2650 * pi * 0.25e-6;
   EXPECT_NEAR(a.criticalTimestep(), 2 * std::sqrt(m / 4e5), 1e-15);
   // Kept between steps, and measured again after any change that moves it.
@@ -199,7 +192,7 @@ TEST(DemContact, CriticalTimestepUsesLightestElementAndStiffestMaterial) {
   a.materials().replace(1, changed);
   a.updateMass(1);  // the small disc; the large one keeps its mass until told
   EXPECT_NEAR(a.criticalTimestep(), 2 * std::sqrt(4 * m / 1.6e6), 1e-15);
-  disc(a, Vec2(2, 0), 0.1e-3);
+  addDisc(a, Vec2(2, 0), 0.1e-3);
   EXPECT_NEAR(a.criticalTimestep(), 2 * std::sqrt(4 * 2650 * pi * 1e-8 / 1.6e6), 1e-15);
   EXPECT_EQ(a.criticalTimestep(), a.measureCriticalTimestep());
 }
@@ -209,8 +202,8 @@ TEST(DemContact, CriticalTimestepUsesLightestElementAndStiffestMaterial) {
 TEST(DemContact, DampingFollowsMaterialAndMassChanges) {
   Assembly a;
   a.materials().add(material(0.5, 0.5));
-  disc(a, Vec2(0, 0), 1e-3);
-  disc(a, Vec2(1.999e-3, 0), 1e-3);
+  addDisc(a, Vec2(0, 0), 1e-3);
+  addDisc(a, Vec2(1.999e-3, 0), 1e-3);
   const double dt = a.criticalTimestep() / 50;
   DampingRatios ratios;  // the ratio solved for the step (dem_restitution_test.cpp)
   auto expected = [&](double e, double density) {
@@ -355,8 +348,8 @@ TEST(DemContact, BlowUpIsStoppedBeforeTheStateChanges) {
   Assembly a;
   a.materials().add(material(1.0, 0.5));
   const int i = wall(a, Vec2(-1, 0), Vec2(1, 0));
-  const int j = disc(a, Vec2(0, 0.99e-3), 1e-3);  // resting on a floor under gravity
-  const double dt = a.criticalTimestep() * 1.5;   // unstable
+  const int j = addDisc(a, Vec2(0, 0.99e-3), 1e-3);  // resting on a floor under gravity
+  const double dt = a.criticalTimestep() * 1.5;      // unstable
   Vec2 before[2];
   bool stopped = false;
   for (int s = 0; s < 1000 && !stopped; ++s) {
