@@ -26,8 +26,8 @@ struct ContactInputs {
   const double* w;
   const std::unique_ptr<Shape>* shape;
   const PairLaw* laws;  // indexed by ContactList::law
-  double dt;
-  double maxOverlap;  // a touching contact deeper than this x its minSize stops the step
+  double dt, invDt;     // the step and its inverse (the spanned dashpot)
+  double maxOverlap;    // a touching contact deeper than this x its minSize stops the step
 };
 
 // Whether a touching contact stops the step: too deep, or a force that is not
@@ -139,7 +139,7 @@ inline double normalFloor(const PairLaw& law) {
   c.xi = in.x[i].x(), c.yi = in.x[i].y(), c.vix = in.v[i].x(), c.viy = in.v[i].y(), c.wi = in.w[i];
   c.xj = in.x[j].x(), c.yj = in.x[j].y(), c.vjx = in.v[j].x(), c.vjy = in.v[j].y(), c.wj = in.w[j];
   c.kn = law.kn, c.ks = law.ks, c.friction = law.friction, c.dampingPart = l.dampingPart[k],
-  c.dt = in.dt, c.invDt = 1.0 / in.dt;
+  c.dt = in.dt, c.invDt = in.invDt;
   c.normalFloor = l.normalFloor[k], c.spanned = l.spanned[k] != 0;
   c.hertz = law.hertz, c.radius = l.radius[k], c.youngs = law.effectiveYoungs;
   c.shearModulus = law.effectiveShear, c.fixedDamping = law.damping >= 0;

@@ -202,7 +202,7 @@ std::size_t ContactSet::evaluate(const Bodies& b, const std::vector<Vec2>& vel,
                                  int threads) {
   const detail::ContactInputs in{b.x.data(),   b.angle.data(), b.reach.data(), vel.data(),
                                  omega.data(), b.shape.data(), laws_.data(),   dt,
-                                 maxOverlap};
+                                 1.0 / dt,     maxOverlap};
   const detail::LawColumns lawColumns{lawKn_.data(), lawKs_.data(), lawFriction_.data()};
   ContactList& l = list_;
   const std::size_t nc = l.size(), nv = l.vectorCount;

@@ -30,7 +30,7 @@ std::size_t linearDiscContacts(ContactList& l, std::size_t begin, std::size_t en
                      *__restrict overlapOut = l.overlap.data(), *__restrict taOut = l.ta.data(),
                      *__restrict tbOut = l.tb.data();
   const double* __restrict minSize = l.minSize.data();
-  const double dt = in.dt, invDt = 1.0 / in.dt, maxOverlap = in.maxOverlap;
+  const double dt = in.dt, invDt = in.invDt, maxOverlap = in.maxOverlap;
   std::size_t first = end;
 #pragma omp simd reduction(min : first)
   for (std::size_t k = begin; k < end; ++k) {
