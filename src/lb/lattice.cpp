@@ -382,7 +382,7 @@ int Lattice::addCircle(const CircleObstacle& circle) {
     throw Error("VALUE CIRCLE",
                 "circle {" + formatNumber(c.centre.x()) + " " + formatNumber(c.centre.y()) + " " +
                     formatNumber(c.radius) +
-                    "} holds the whole lattice: with -outside 1 it would cover nothing");
+                    "} holds the whole lattice: as an outside circle it would cover nothing");
   c.id = obstacleId(c.id, obstacleIds());
   c.force = Vec2::Zero(), c.torque = 0, c.cells = 0;
   circles_.push_back(c);

@@ -40,7 +40,7 @@ double wholeCells(double length, double h, const char* what) {
                                      " of " + formatNumber(length) +
                                      ": the count of cells overflows");
   if (n < 1 || std::abs(n * h - length) > 1e-9 * std::max(length, h))
-    throw Error("VALUE SIZE", std::string("-size ") + what + " " + formatNumber(length) +
+    throw Error("VALUE SIZE", std::string("the lattice's ") + what + " " + formatNumber(length) +
                                   " is not a whole number of spacings (h = " + formatNumber(h) +
                                   "): use " + roundedLength(std::max(1.0, n) * h));
   return n;
@@ -78,7 +78,7 @@ ResolvedLattice resolve(const LatticeDef& def) {
   requirePositive(def.size.x(), "size");
   requirePositive(def.size.y(), "size");
   if ((def.cells > 0) == (def.spacing > 0.0))
-    throw Error("VALUE CELLS", "give exactly one of -cells and -spacing");
+    throw Error("VALUE CELLS", "give exactly one of the cell count and the spacing");
   double nx = def.cells;
   if (def.cells > 0) {
     r.h = def.size.x() / def.cells;
@@ -121,8 +121,7 @@ ResolvedLattice resolve(const LatticeDef& def) {
     r.dt = *def.timestep;
     r.viscosity = (2 * r.tau - 1) / 6 * h2 / r.dt;
   } else {
-    throw Error("VALUE VISCOSITY",
-                "the lattice needs -viscosity (or a timestep from \"sim configure -timestep\")");
+    throw Error("VALUE VISCOSITY", "the lattice needs a viscosity", Remedy::viscosityOrTimestep);
   }
   if (!(r.dt > 0) || !std::isfinite(r.dt))
     throw Error("VALUE TIMESTEP", "derived timestep " + formatNumber(r.dt) + " is not usable");

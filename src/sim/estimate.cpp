@@ -66,7 +66,8 @@ RunRecord trialRun(const Manager& m) {
     }
     return recordRun(copy, seconds, steps);
   } catch (const Error& e) {
-    throw Error(e.code(), std::string("a trial step on a copy of the scene failed: ") + e.what());
+    throw Error(e.code(), std::string("a trial step on a copy of the scene failed: ") + e.what(),
+                e.remedy());
   }
 }
 

@@ -20,7 +20,7 @@ std::string rounded(double value, int digits) {
 }
 
 // What marks each warning given once a run in the log (Manager::warned).
-constexpr std::string_view kBgkMarker = "use \"-collision trt\"";
+constexpr std::string_view kBgkMarker = "with the BGK collision: its bounce-back walls slip";
 constexpr std::string_view kLightMarker = "too light for the explicit coupling";
 constexpr std::string_view kOverlapMarker = "its own periodic image";
 constexpr std::string_view kCellReynoldsMarker = "cell Reynolds number";
@@ -35,17 +35,17 @@ Manager::Manager() : threads_(std::max(1, omp_get_max_threads())) {
 }
 
 lb::Lattice& Manager::lattice() {
-  if (!lattice_) throw Error("LOOKUP LATTICE", "there is no lattice: use \"lattice create\"");
+  if (!lattice_) throw Error("LOOKUP LATTICE", "there is no lattice", Remedy::createLattice);
   return *lattice_;
 }
 
 const lb::Lattice& Manager::lattice() const {
-  if (!lattice_) throw Error("LOOKUP LATTICE", "there is no lattice: use \"lattice create\"");
+  if (!lattice_) throw Error("LOOKUP LATTICE", "there is no lattice", Remedy::createLattice);
   return *lattice_;
 }
 
 void Manager::createLattice(lb::LatticeDef def) {
-  if (lattice_) throw Error("EXISTS LATTICE", "a lattice exists: \"lattice delete\" it first");
+  if (lattice_) throw Error("EXISTS LATTICE", "a lattice exists", Remedy::deleteLattice);
   // A fixed timestep gives tau (with a viscosity) or the viscosity (with tau).
   if (fixedTimestep_ && (!def.tau || !def.viscosity)) def.timestep = fixedTimestep_;
   auto lattice = std::make_unique<lb::Lattice>(lb::resolve(def));
@@ -53,7 +53,7 @@ void Manager::createLattice(lb::LatticeDef def) {
   // 1e296) can leave the first state itself not finite: refuse them here.
   if (const std::vector<std::string> problems = lattice->validate(); !problems.empty())
     throw Error("VALUE LATTICE", "these settings give the fluid a state that is not finite (" +
-                                     problems.front() + "): check -viscosity, -tau and -forcing");
+                                     problems.front() + "): check the viscosity, tau and forcing");
   lattice->setThreads(threads_);
   lattice_ = std::move(lattice);
   latticeBorn_ = steps_;
@@ -74,10 +74,11 @@ void Manager::checkCollision() {
   if (p.def.collision != lb::Collision::bgk || !(p.tau > kBgkTauLimit) ||
       !lattice_->hasNoSlipSurfaces() || warned(kBgkMarker))
     return;
-  warn("tau " + rounded(p.tau, 6) + " with the BGK collision: its bounce-back walls slip, " +
-       "an error that grows as tau squared (channel flow 16 cells across is 5% off at tau 2, " +
-       "15% at 3, 54% at 5, 250% at 10): " + std::string(kBgkMarker) +
-       " (exact walls at any tau) or a tau of " + formatNumber(kBgkTauLimit) + " or less");
+  warn("tau " + rounded(p.tau, 6) + " " + std::string(kBgkMarker) +
+           ", an error that grows as tau squared (channel flow 16 cells across is 5% off at tau "
+           "2, 15% at 3, 54% at 5, 250% at 10): keep tau at " +
+           formatNumber(kBgkTauLimit) + " or less",
+       Remedy::trtCollision);
 }
 
 // Both want the coverage of this step (the coupler's prepare).
@@ -127,12 +128,12 @@ void Manager::checkCoverage() {
   }
   if (count == 0) return;
   warn("element " + std::to_string(b.id[first]) +
-       (count > 1 ? " (and " + std::to_string(count - 1) + " more)" : "") + ", of density " +
-       rounded(b.mass[first] / (b.shape[first]->area() * rho), 3) + " times the fluid's, is " +
-       std::string(kLightMarker) + ": the fluid inside it feeds back " + rounded(feedback, 3) +
-       " of its motion each step, at or over the limit " + formatNumber(limit) +
-       ", so its velocity will flip sign from step to step and grow: use \"sim configure "
-       "-coupling implicit\" (stable at any density)");
+           (count > 1 ? " (and " + std::to_string(count - 1) + " more)" : "") + ", of density " +
+           rounded(b.mass[first] / (b.shape[first]->area() * rho), 3) + " times the fluid's, is " +
+           std::string(kLightMarker) + ": the fluid inside it feeds back " + rounded(feedback, 3) +
+           " of its motion each step, at or over the limit " + formatNumber(limit) +
+           ", so its velocity will flip sign from step to step and grow",
+       Remedy::implicitCoupling);
 }
 
 void Manager::deleteLattice() {
@@ -325,7 +326,7 @@ void Manager::stepElements(double dt) {
                                           std::to_string(substeps_) +
                                           "; elements stay at substep " + std::to_string(k) + ")"
                                     : "";
-      throw Error(e.code(), e.what() + where);
+      throw Error(e.code(), e.what() + where, e.remedy());
     }
   }
 }
@@ -335,15 +336,15 @@ void Manager::step() {
   const double demDt = dt / substeps_;
   if (!assembly_.empty()) {
     if (!(dt > 0))
-      throw Error(
-          "VALUE TIMESTEP",
-          "no timestep: the elements are all held; set one with \"sim configure -timestep\"");
+      throw Error("VALUE TIMESTEP", "no timestep: the elements are all held", Remedy::setTimestep);
     checkDemTimestep(demDt);
     checkDemAccuracy(demDt);
   }
   auto stamp = [&](const Error& e) {
-    return Error(e.code(), "step " + std::to_string(steps_ + 1) +
-                               " (t = " + formatNumber(time_ + dt) + "): " + e.what());
+    return Error(e.code(),
+                 "step " + std::to_string(steps_ + 1) + " (t = " + formatNumber(time_ + dt) +
+                     "): " + e.what(),
+                 e.remedy());
   };
   // Attached afresh each step: the lattice and the elements may have been
   // replaced (a new lattice, a reset, a checkpoint) since the last.
@@ -409,18 +410,18 @@ void Manager::reset() {
   warningLog_.clear();
 }
 
-void Manager::warn(const std::string& message) {
-  pendingWarnings_.push_back(message);
-  warningLog_.push_back(message);
+void Manager::warn(const std::string& message, Remedy remedy) {
+  pendingWarnings_.push_back({message, remedy});
+  warningLog_.push_back({message, remedy});
 }
 
 bool Manager::warned(std::string_view marker) const {
   return std::any_of(warningLog_.begin(), warningLog_.end(),
-                     [&](const std::string& w) { return w.find(marker) != std::string::npos; });
+                     [&](const Warning& w) { return w.text.find(marker) != std::string::npos; });
 }
 
-std::vector<std::string> Manager::takeWarnings() {
-  std::vector<std::string> out;
+std::vector<Warning> Manager::takeWarnings() {
+  std::vector<Warning> out;
   out.swap(pendingWarnings_);
   return out;
 }

@@ -17,7 +17,7 @@ void Manager::saveState(ByteWriter& out) const {
   out.put(coupled_), out.put(machWarned_), out.put(solidMachWarned_);
   out.put(std::vector<int>(underResolvedWarned_.begin(), underResolvedWarned_.end()));
   out.put(std::uint64_t(warningLog_.size()));
-  for (const std::string& w : warningLog_) out.put(w);
+  for (const Warning& w : warningLog_) out.put(w.text), out.put(std::uint8_t(w.remedy));
   out.put(lattice_ != nullptr);
   if (lattice_) lattice_->saveState(out);
   assembly_.saveState(out);
@@ -47,7 +47,14 @@ void Manager::loadState(ByteReader& in) {
   underResolvedWarned_ = std::set<int>(warned.begin(), warned.end());
   const std::size_t warnings = in.count(8, "warnings");
   warningLog_.resize(warnings);
-  for (std::string& w : warningLog_) in.get(w, "warnings");
+  for (Warning& w : warningLog_) {
+    in.get(w.text, "warnings");
+    // Version 1 wrote the remedy's words into the sentence.
+    if (in.version < 2) continue;
+    const auto remedy = in.get<std::uint8_t>("warnings");
+    if (remedy >= kRemedyCount) ByteReader::fail("it holds an unknown remedy");
+    w.remedy = Remedy(remedy);
+  }
   if (in.getBool("lattice")) lattice_ = lb::Lattice::loadState(in, threads_);
   assembly_.loadState(in);
   // As it was, unchecked against the elements' critical step: the next step checks.

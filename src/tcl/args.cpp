@@ -5,6 +5,8 @@
 #include <limits>
 #include <sstream>
 
+#include "remedy.hpp"
+
 namespace sf::tcl {
 namespace {
 
@@ -42,7 +44,7 @@ int fail(Tcl_Interp* interp, const std::string& code, const std::string& message
 }
 
 int fail(Tcl_Interp* interp, const Error& error) {
-  return fail(interp, error.code(), error.what());
+  return fail(interp, error.code(), withRemedy(error.what(), error.remedy()));
 }
 
 bool getDouble(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, double& out) {

@@ -1,4 +1,5 @@
 // Package initialisation: one Session per interpreter, the commands in ::sf.
+#include "remedy.hpp"
 #include "sandflow/tcl/session.hpp"
 
 namespace sf::tcl {
@@ -60,7 +61,8 @@ void warnUser(Session& session, const std::string& message) {
 }
 
 void flushWarnings(Session& session) {
-  for (const std::string& w : session.manager.takeWarnings()) warnUser(session, w);
+  for (const sim::Warning& w : session.manager.takeWarnings())
+    warnUser(session, withRemedy(w.text, w.remedy));
 }
 
 }  // namespace sf::tcl

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "accuracy_preset.hpp"
+#include "remedy.hpp"
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/session.hpp"
@@ -267,8 +268,8 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
   const double mach = lattice ? m.lattice().maxMach() : 0.0;
   const double tau = lattice ? m.lattice().params().tau : 0.0;
   Tcl_Obj* warnings = Tcl_NewListObj(0, nullptr);
-  for (const std::string& w : m.warnings())
-    Tcl_ListObjAppendElement(nullptr, warnings, newString(w));
+  for (const sim::Warning& w : m.warnings())
+    Tcl_ListObjAppendElement(nullptr, warnings, newString(withRemedy(w.text, w.remedy)));
   const bool stable = !lattice || (std::isfinite(mach) && mach <= m.machStopLimit() && tau > 0.5);
   // What the fluid exerted on all elements together in the last step.
   Vec2 fluidForce = Vec2::Zero();

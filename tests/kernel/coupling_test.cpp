@@ -427,9 +427,30 @@ TEST(Coupling, UnderResolvedElementWarnsOnce) {
   test::addDisc(m, test::softMaterial(m, 2.0), Vec2(0.5, 0.5), 0.04);
   m.step();
   m.step();
-  const std::vector<std::string> w = m.takeWarnings();
+  const std::vector<sim::Warning> w = m.takeWarnings();
   ASSERT_EQ(w.size(), 1u);
-  EXPECT_NE(w[0].find("under two lattice cells"), std::string::npos);
+  EXPECT_NE(w[0].text.find("under two lattice cells"), std::string::npos);
+}
+
+// The kernel names what a user can do without the command's words (issue 23):
+// the message is the kernel's, the remedy is for the front end to word.
+TEST(Manager, ErrorsAndWarningsCarryTheirRemedy) {
+  sim::Manager m;
+  try {
+    m.lattice();
+    FAIL() << "no lattice, no error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "there is no lattice");
+    EXPECT_EQ(e.remedy(), Remedy::createLattice);
+  }
+  lb::LatticeDef def = test::periodicSquare(1.0, 20, 0.01, 3.0);  // BGK over tau 2
+  def.sides[lb::bottom] = def.sides[lb::top] = lb::SideDef{lb::SideKind::noslip};
+  m.createLattice(def);
+  const std::vector<sim::Warning> w = m.takeWarnings();
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].text.find("bounce-back walls slip"), std::string::npos);
+  EXPECT_EQ(w[0].text.find("-collision"), std::string::npos);
+  EXPECT_EQ(w[0].remedy, Remedy::trtCollision);
 }
 
 // A disc wholly above a channel's top wall covers nothing (and is skipped

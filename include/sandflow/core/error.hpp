@@ -2,19 +2,37 @@
 // The one exception type of the kernel. `code` is a short machine-readable class
 // ("VALUE TAU", "UNSTABLE MACH") that the Tcl layer turns into errorCode
 // "SANDFLOW VALUE TAU"; `what()` is a sentence a user understands.
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
 namespace sf {
 
+// What a user can do about an error or a warning, named by the kernel without
+// knowing the command language: the front end words it (the Tcl layer appends
+// `use "lattice create"` and the like, tcl/remedy.cpp). Stored in checkpoints
+// with the warnings: append, never renumber.
+enum class Remedy : std::uint8_t {
+  none,
+  createLattice,        // there is no lattice
+  deleteLattice,        // a lattice exists already
+  viscosityOrTimestep,  // a lattice needs one of them
+  setTimestep,          // the scene has no timestep of its own
+  implicitCoupling,     // grains too light for the explicit coupling
+  trtCollision,         // BGK's bounce-back walls slip at high tau
+};
+inline constexpr int kRemedyCount = 7;
+
 class Error : public std::runtime_error {
  public:
-  Error(std::string code, const std::string& message)
-      : std::runtime_error(message), code_(std::move(code)) {}
+  Error(std::string code, const std::string& message, Remedy remedy = Remedy::none)
+      : std::runtime_error(message), code_(std::move(code)), remedy_(remedy) {}
   const std::string& code() const { return code_; }
+  Remedy remedy() const { return remedy_; }
 
  private:
   std::string code_;
+  Remedy remedy_;
 };
 
 // Formats a double the way a user would type it back (shortest round-trip form).

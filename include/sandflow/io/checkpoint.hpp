@@ -13,7 +13,8 @@
 
 namespace sf::io {
 
-inline constexpr int kCheckpointVersion = 1;
+// 2: each warning keeps its remedy (sf::Remedy) beside its sentence.
+inline constexpr int kCheckpointVersion = 2;
 
 void saveCheckpoint(const std::string& path, const sim::Manager& manager,
                     const std::string& session);

@@ -16,6 +16,13 @@
 
 namespace sf::sim {
 
+// A warning as the kernel gives it: its sentence, and what the user can do
+// about it (the front end words the remedy).
+struct Warning {
+  std::string text;
+  Remedy remedy = Remedy::none;
+};
+
 class Manager {
  public:
   Manager();
@@ -76,8 +83,8 @@ class Manager {
   double machWarnLimit() const { return 0.1; }
   double machStopLimit() const { return 0.3; }
   // Warnings raised since the last call (each kind once per lattice).
-  std::vector<std::string> takeWarnings();
-  const std::vector<std::string>& warnings() const { return warningLog_; }
+  std::vector<Warning> takeWarnings();
+  const std::vector<Warning>& warnings() const { return warningLog_; }
 
   // Where the steps' time went, stage by stage, since the profile was last
   // reset (the run command resets it at each run's start and adds its
@@ -103,7 +110,7 @@ class Manager {
   void setMlups(double m) { mlups_ = m; }
 
  private:
-  void warn(const std::string& message);
+  void warn(const std::string& message, Remedy remedy = Remedy::none);
   // Whether a warning holding `marker` was given since the last reset. The
   // warnings below are given once a run this way: the log is in the
   // checkpoint, so a continued run gives the same ones.
@@ -138,7 +145,7 @@ class Manager {
   bool solidMachWarned_ = false;
   std::set<int> underResolvedWarned_;
   Profile profile_;
-  std::vector<std::string> pendingWarnings_, warningLog_;
+  std::vector<Warning> pendingWarnings_, warningLog_;
 };
 
 }  // namespace sf::sim
