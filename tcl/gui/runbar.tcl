@@ -207,6 +207,11 @@ proc ::sf::gui::runbar::particleRate {info} {
     return $text
 }
 
+# "1 element", "3 elements".
+proc ::sf::gui::runbar::counted {n noun} {
+    return "$n $noun[expr {$n == 1 ? {} : {s}}]"
+}
+
 # Step, time, speed, Mach and warnings in the status bar.
 proc ::sf::gui::runbar::update {{info {}}} {
     variable text
@@ -221,8 +226,8 @@ proc ::sf::gui::runbar::update {{info {}}} {
     } elseif {[set rate [particleRate $info]] ne ""} {
         lappend parts $rate
     }
-    lappend parts "[dict get $info elements] elements"
+    lappend parts [counted [dict get $info elements] element]
     set nw [llength [dict get $info warnings]]
-    if {$nw} { lappend parts "$nw warnings" }
+    if {$nw} { lappend parts [counted $nw warning] }
     set text [join $parts "   \u00b7   "]
 }
