@@ -187,15 +187,17 @@ int LatticeCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
   if (!given[kSize]) return fail(interp, "VALUE SIZE", "lattice create needs -size {Lx Ly}");
   if (given[kCells] == given[kSpacing])
     return fail(interp, "VALUE CELLS", "lattice create needs exactly one of -cells and -spacing");
-  return guarded(interp, [&] {
+  const int code = guarded(interp, [&] {
     s.manager.createLattice(def);
     return TCL_OK;
   });
+  flushWarnings(s);  // told now (BGK at tau 3 along walls), not at the first step
+  return code;
 }
 
 int LatticeConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   Session& s = sessionOf(data);
-  return guarded(interp, [&] {
+  const int code = guarded(interp, [&] {
     LatticeStage stage = LatticeStage::of(s.manager.lattice().params());
     if (objc == 1) {
       Tcl_SetObjResult(interp, kOptions.all(stage));
@@ -227,6 +229,8 @@ int LatticeConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
     s.manager.reconfigureLattice(def);
     return TCL_OK;
   });
+  flushWarnings(s);
+  return code;
 }
 
 int LatticeCget(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {

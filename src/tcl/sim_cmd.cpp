@@ -179,7 +179,8 @@ const SimStage& defaults() {
 }
 
 int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  sim::Manager& m = sessionOf(data).manager;
+  Session& s = sessionOf(data);
+  sim::Manager& m = s.manager;
   SimStage stage = SimStage::of(m);
   if (objc == 1) {
     Tcl_SetObjResult(interp, kOptions.all(stage));
@@ -200,7 +201,7 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
   if (!kOptions.apply(interp, objc, objv, 1, stage, &given)) return TCL_ERROR;
   const bool preset = given[kAccuracy] && stage.accuracy != kCustomAccuracy;
   if (preset) stagePreset(stage, given);
-  return guarded(interp, [&] {
+  const int code = guarded(interp, [&] {
     // The only steps that can refuse, before anything else changes: the
     // preset's lattice (its tau sets the timestep), then the stepping; a
     // refused stepping puts the lattice back.
@@ -233,6 +234,8 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
     m.assembly().maxOverlap = stage.maxOverlap;
     return TCL_OK;
   });
+  flushWarnings(s);  // a preset's lattice warned of at once
+  return code;
 }
 
 int SimCget(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
