@@ -106,7 +106,10 @@ proc ::sf::gui::console::ConfigureTags {t} {
     foreach tag {input echo} {
         $t tag configure $tag -lmargin1 $indent
     }
-    $t tag configure hint -wrap word
+    # Messages are sentences: wrap them at words (typed code wraps anywhere).
+    foreach tag {hint error warning} {
+        $t tag configure $tag -wrap word
+    }
     $t tag configure trace -lmargin1 $indent -lmargin2 $indent
     $t tag configure link -underline 1
     $t tag bind link <Enter> [list $t configure -cursor hand2]
