@@ -106,8 +106,8 @@ proc ::sf::gui::console::ConfigureTags {t} {
     foreach tag {input echo} {
         $t tag configure $tag -lmargin1 $indent
     }
-    # Messages are sentences: wrap them at words (typed code wraps anywhere).
-    foreach tag {hint error warning} {
+    # Messages and printed lines wrap at words (typed code wraps anywhere).
+    foreach tag {hint error warning output} {
         $t tag configure $tag -wrap word
     }
     $t tag configure trace -lmargin1 $indent -lmargin2 $indent
