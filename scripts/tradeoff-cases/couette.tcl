@@ -8,13 +8,14 @@
 # cylinder is 0.2 across: cells per diameter = 0.2 x cells.
 #
 #   sandflow scripts/tradeoff-cases/couette.tcl ?-cells N? ?-tau tau? ?-time T?
-#            ?-collision bgk|trt? ?-solidratio exact|1|2|4|8? ?-out FILE? ...
+#            ?-collision bgk|trt? ?-magic L? ?-solidratio exact|1|2|4|8? ?-out FILE? ...
 source [file join [file dirname [info script]] common.tcl]
 set options [tradeoff::options {
     {cells.arg      40    "lattice cells across the unit square"}
     {tau.arg        1.0   "relaxation time (the viscosity is fixed: the timestep follows)"}
     {time.arg       1.5   "how long to run"}
     {collision.arg  bgk   "collision: bgk or trt"}
+    {magic.arg      0.1875 "TRT's magic parameter Lambda"}
     {solidratio.arg exact "solid ratio: exact, or 1, 2, 4, 8 subcells a side"}
 }]
 dict with options {}
@@ -22,7 +23,7 @@ set r1 0.1; set r2 0.3; set w2 0.1; set nu 4.166e-2
 
 tradeoff::start
 tradeoff::try lattice create -size {1 1} -cells ${-cells} -viscosity $nu -tau ${-tau} -periodic {1 1} \
-    -collision ${-collision}
+    -collision ${-collision} -magic ${-magic}
 tradeoff::try sim configure -solidratio ${-solidratio}
 set inner [lattice obstacle circle [list 0.5 0.5 $r1]]
 lattice obstacle circle [list 0.5 0.5 $r2] -outside 1 -velocity [list 0 0 $w2]

@@ -6,13 +6,15 @@
 # the exact parabola u = F/(2 nu) y (1 - y).
 #
 #   sandflow scripts/tradeoff-cases/poiseuille.tcl ?-cells N? ?-tau tau?
-#            ?-collision bgk|trt? ?-forcescheme nodal|guo? ?-time T? ?-out FILE? ...
+#            ?-collision bgk|trt? ?-forcescheme nodal|guo? ?-magic L? ?-time T?
+#            ?-out FILE? ...
 source [file join [file dirname [info script]] common.tcl]
 set options [tradeoff::options {
     {cells.arg       16     "cells across the channel"}
     {tau.arg         0.8    "relaxation time (the viscosity is fixed: the timestep follows)"}
     {collision.arg   bgk    "collision: bgk or trt"}
     {forcescheme.arg nodal  "forcing: nodal or guo"}
+    {magic.arg       0.1875 "TRT's magic parameter Lambda (3/16: walls exact for this flow)"}
     {time.arg        2      "how long to run, in diffusive times H^2 / nu"}
 }]
 dict with options {}
@@ -22,7 +24,7 @@ set h [expr {$H / ${-cells}}]
 
 tradeoff::start
 tradeoff::try lattice create -size [list [expr {4 * $h}] $H] -cells 4 -viscosity $nu -tau ${-tau} \
-    -forcing [list $F 0] -collision ${-collision} -forcescheme ${-forcescheme}
+    -forcing [list $F 0] -collision ${-collision} -forcescheme ${-forcescheme} -magic ${-magic}
 set steps [expr {int(round(${-time} * $H * $H / $nu / [dict get [lattice info] timestep]))}]
 tradeoff::run $steps
 tradeoff::stop

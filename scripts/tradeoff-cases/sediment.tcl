@@ -15,7 +15,8 @@
 #
 #   sandflow scripts/tradeoff-cases/sediment.tcl ?-cpd N? ?-ratio r?
 #            ?-coupling explicit|implicit? ?-integrator central|euler|verlet?
-#            ?-substeps n? ?-solidratio exact|1|2|4|8? ?-tau tau? ?-collision bgk|trt?
+#            ?-substeps n? ?-solidratio exact|1|2|4|8? ?-interior equilibrium|collide?
+#            ?-tau tau? ?-collision bgk|trt?
 #            ?-forcescheme nodal|guo? ?-fall D? ?-forcecsv FILE? ...
 source [file join [file dirname [info script]] common.tcl]
 set options [tradeoff::options {
@@ -25,6 +26,7 @@ set options [tradeoff::options {
     {integrator.arg central  "element integrator: central, euler or verlet"}
     {substeps.arg   1        "element steps per fluid step"}
     {solidratio.arg exact    "solid ratio: exact, or 1, 2, 4, 8 subcells a side"}
+    {interior.arg   equilibrium "cells deep inside the disc: equilibrium or collide"}
     {tau.arg        0.8      "relaxation time"}
     {collision.arg  bgk      "collision: bgk or trt"}
     {forcescheme.arg nodal   "forcing: nodal or guo"}
@@ -42,7 +44,7 @@ tradeoff::try lattice create -size [list $L $H] -cells $cells -viscosity $nu -ta
     -walls {left noslip right noslip bottom noslip top noslip} -periodic {0 0} \
     -collision ${-collision} -forcescheme ${-forcescheme}
 tradeoff::try sim configure -integrator ${-integrator} -coupling ${-coupling} \
-    -solidratio ${-solidratio}
+    -solidratio ${-solidratio} -interior ${-interior}
 set dt [dict get [lattice info] timestep]
 # Contacts (only at a wall) soft enough that the critical step is five fluid steps.
 set k [expr {${-ratio} * acos(-1) * 0.25 * $d * $d * 4 / (25 * $dt * $dt)}]
