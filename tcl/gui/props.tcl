@@ -134,7 +134,9 @@ proc ::sf::gui::props::show {} {
                     if {$row ne {}} { ::sf::gui::tip $rows.e$key.$c [describe $row] }
                 }
             } else {
-                ttk::entry $rows.e$key -textvariable ::sf::gui::props::values($opt) -width 16
+                # A vector's numbers to 12 digits each: room for two of them.
+                set width [expr {[string match vec* $type] ? 25 : 16}]
+                ttk::entry $rows.e$key -textvariable ::sf::gui::props::values($opt) -width $width
             }
             if {$row ne {}} {
                 ::sf::gui::tip $rows.l$key [describe $row]
