@@ -117,7 +117,7 @@ proc ::sf::gui::props::show {} {
             set type [expr {$row ne {} ? [dict get $row type] : "text"}]
             if {$type eq "choice"} {
                 ttk::combobox $rows.e$key -textvariable ::sf::gui::props::values($opt) -width 14 \
-                    -values [dict get $row choices] -state readonly
+                    -values [choices $row] -state readonly
                 ::bind $rows.e$key <<ComboboxSelected>> [list ::sf::gui::props::apply $opt]
             } elseif {$type eq "boolean"} {
                 ttk::checkbutton $rows.e$key -variable ::sf::gui::props::values($opt) \
@@ -158,7 +158,8 @@ proc ::sf::gui::props::show {} {
     }
     foreach {opt value} $keep {
         set key [string range $opt 1 end]
-        set value [tidy $value]
+        set row [expr {[dict exists $table $opt] ? [dict get $table $opt] : {}}]
+        set value [fieldOf $row [tidy $value]]
         if {[info exists errors($opt)]} {
             # A refused value stays in its field, its reason beneath it.
             lassign $errors($opt) refused message
@@ -175,7 +176,7 @@ proc ::sf::gui::props::show {} {
         syncFlags $opt
         # Choices that change (an element's -material: the materials there are).
         if {[dict exists $table $opt] && [dict get $table $opt type] eq "choice"} {
-            $rows.e$key configure -values [dict get $table $opt choices]
+            $rows.e$key configure -values [choices [dict get $table $opt]]
         }
     }
     $f.info configure -text [summary]
@@ -255,6 +256,30 @@ proc ::sf::gui::props::tidy {value} {
     return $out
 }
 
+# A choice whose default is empty (the view's -field: velocity with a
+# lattice, else none) lists that default as "auto": an empty field would
+# look like no value at all.
+proc ::sf::gui::props::choices {row} {
+    set choices [dict get $row choices]
+    if {[dict get $row default] eq {}} { set choices [linsert $choices 0 auto] }
+    return $choices
+}
+proc ::sf::gui::props::fieldOf {row value} {
+    if {$value eq {} && $row ne {} && [dict get $row type] eq "choice" &&
+        [dict get $row default] eq {}} {
+        return auto
+    }
+    return $value
+}
+proc ::sf::gui::props::valueOf {opt field} {
+    set table [table]
+    if {$field eq "auto" && [dict exists $table $opt] && [dict get $table $opt type] eq "choice" &&
+        [dict get $table $opt default] eq {}} {
+        return {}
+    }
+    return $field
+}
+
 # Applies one edited field: the configure command, through ::sf::gui::do.
 proc ::sf::gui::props::apply {opt} {
     variable values
@@ -265,8 +290,8 @@ proc ::sf::gui::props::apply {opt} {
         clearError $opt
         return
     }
-    set cmd [list {*}[prefix] $opt $values($opt)]
-    set undo [list {*}[prefix] $opt $shown($opt)]
+    set cmd [list {*}[prefix] $opt [valueOf $opt $values($opt)]]
+    set undo [list {*}[prefix] $opt [valueOf $opt $shown($opt)]]
     set refused $values($opt)
     if {[catch {::sf::gui::do $cmd $undo "[lindex [prefix] 0] $opt"} err]} {
         set errors($opt) [list $refused $err]
