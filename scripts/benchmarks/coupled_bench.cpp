@@ -39,6 +39,7 @@
 
 #include <unistd.h>
 
+#include "bench_scenes.hpp"
 #include "sandflow/sim/manager.hpp"
 #include "stream_copy.hpp"
 
@@ -46,6 +47,7 @@ namespace {
 
 using namespace sf;
 using Clock = std::chrono::steady_clock;
+using bench::channel;
 
 double seconds(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -75,16 +77,6 @@ double coreSpeed(int threads) {
   return slowest;
 }
 
-lb::LatticeDef channel(int n) {
-  lb::LatticeDef def;
-  def.size = Vec2(n, n);
-  def.cells = n;
-  def.tau = 0.8;
-  def.timestep = 1.0;
-  def.forcing = Vec2(1e-7, 0);
-  return def;  // periodic in x, no-slip bottom and top
-}
-
 int softMaterial(sim::Manager& m) {
   dem::Material mat{"soft"};
   mat.density = 3.0;
@@ -93,30 +85,9 @@ int softMaterial(sim::Manager& m) {
   return m.assembly().materials().add(mat);
 }
 
-// Discs of radius 8 on a jittered grid with random velocities, covering
-// `fraction` of the lattice; returns how many.
+// Discs of radius 8 covering `fraction` of the lattice; returns how many.
 int addDiscs(sim::Manager& m, int n, double fraction, unsigned seed) {
-  const int mat = softMaterial(m);
-  const double r = 8.0, area = std::numbers::pi * r * r;
-  const int count = int(fraction * n * n / area);
-  const int perRow = int(std::ceil(std::sqrt(double(count))));
-  const double pitch = double(n) / perRow;
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  int made = 0;
-  for (int k = 0; k < count; ++k) {
-    dem::ElementDef d;
-    d.shape = std::make_unique<dem::Disc>(r);
-    d.material = mat;
-    d.x = Vec2((k % perRow + 0.5) * pitch + 0.1 * pitch * u(rng),
-               (k / perRow + 0.5) * pitch + 0.1 * pitch * u(rng));
-    if (d.x.y() < r + 2 || d.x.y() > n - r - 2) continue;
-    d.v = 0.01 * Vec2(u(rng), u(rng));
-    d.w = 0.001 * u(rng);
-    m.assembly().add(std::move(d));
-    ++made;
-  }
-  return made;
+  return bench::scatterDiscs(m, n, fraction, seed, softMaterial(m));
 }
 
 struct Split {

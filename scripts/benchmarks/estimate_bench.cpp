@@ -15,22 +15,14 @@
 #include <random>
 #include <string>
 
+#include "bench_scenes.hpp"
 #include "sandflow/sim/estimate.hpp"
 
 namespace {
 
 using namespace sf;
 using Clock = std::chrono::steady_clock;
-
-lb::LatticeDef channel(int n) {
-  lb::LatticeDef def;
-  def.size = Vec2(n, n);
-  def.cells = n;
-  def.tau = 0.8;
-  def.timestep = 1.0;
-  def.forcing = Vec2(1e-7, 0);
-  return def;  // lattice units: periodic in x, no-slip bottom and top
-}
+using bench::channel;
 
 int softMaterial(dem::Assembly& a, double kn) {
   dem::Material mat{"soft"};
@@ -62,24 +54,7 @@ void bed(sim::Manager& m) {
 void coupled(sim::Manager& m) {
   const int n = 1024;
   m.createLattice(channel(n));
-  const int mat = softMaterial(m.assembly(), 1e-4);
-  const double r = 8.0, area = std::numbers::pi * r * r;
-  const int count = int(0.10 * n * n / area);
-  const int perRow = int(std::ceil(std::sqrt(double(count))));
-  const double pitch = double(n) / perRow;
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(-1, 1);
-  for (int k = 0; k < count; ++k) {
-    dem::ElementDef d;
-    d.shape = std::make_unique<dem::Disc>(r);
-    d.material = mat;
-    d.x = Vec2((k % perRow + 0.5) * pitch + 0.1 * pitch * u(rng),
-               (k / perRow + 0.5) * pitch + 0.1 * pitch * u(rng));
-    if (d.x.y() < r + 2 || d.x.y() > n - r - 2) continue;
-    d.v = 0.01 * Vec2(u(rng), u(rng));
-    d.w = 0.001 * u(rng);
-    m.assembly().add(std::move(d));
-  }
+  bench::scatterDiscs(m, n, 0.10, 11, softMaterial(m.assembly(), 1e-4));
 }
 
 // N steps as `run` takes them: the profile reset, then timed.

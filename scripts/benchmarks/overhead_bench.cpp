@@ -18,6 +18,7 @@
 #include <random>
 #include <string>
 
+#include "bench_scenes.hpp"
 #include "sandflow/sim/manager.hpp"
 
 namespace {
@@ -31,13 +32,7 @@ constexpr int kDiscsPerSide = 60;              // 3,600 discs
 constexpr double kApart = 2.0 * kLatticeSize;  // the discs above the top wall (x is periodic)
 
 lb::LatticeDef channel() {
-  lb::LatticeDef def;
-  def.size = Vec2(kLatticeSize, kLatticeSize);
-  def.cells = kLatticeSize;
-  def.tau = 0.8;
-  def.timestep = 1.0;
-  def.forcing = Vec2(1e-7, 0);
-  return def;  // lattice units: h = dt = 1
+  return bench::channel(kLatticeSize);
 }
 
 // Discs of radius 1 (two cells across: resolved, no warning) on a grid,
