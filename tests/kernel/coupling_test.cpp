@@ -455,15 +455,20 @@ TEST(Manager, ErrorsAndWarningsCarryTheirRemedy) {
 
 // A disc wholly above a channel's top wall covers nothing (and is skipped
 // before its footprint); one across the wall still covers its cells below it.
+// 40 x 20 cells of unit size, periodic in x, walls at y = 0 and 20.
+lb::LatticeDef walledChannel() {
+  lb::LatticeDef def;
+  def.size = Vec2(40, 20);
+  def.cells = 40;
+  def.tau = 0.8;
+  def.timestep = 1.0;
+  return def;
+}
+
 TEST(Coupling, ElementBeyondAWallCoversNoCell) {
   auto covered = [](bool beyond) {
     sim::Manager m;
-    lb::LatticeDef def;
-    def.size = Vec2(40, 20);
-    def.cells = 40;
-    def.tau = 0.8;
-    def.timestep = 1.0;
-    m.createLattice(def);  // periodic in x, walls at y = 0 and 20
+    m.createLattice(walledChannel());
     const int mat = test::softMaterial(m, 2.0);
     test::addDisc(m, mat, Vec2(20, 19), 3.0);
     if (beyond) test::addDisc(m, mat, Vec2(10, 24.5), 3.0);
@@ -477,12 +482,7 @@ TEST(Coupling, ElementBeyondAWallCoversNoCell) {
 
 TEST(Coupling, ElementsAllBeyondTheWallsPayNoCouplingPass) {
   sim::Manager m;
-  lb::LatticeDef def;
-  def.size = Vec2(40, 20);
-  def.cells = 40;
-  def.tau = 0.8;
-  def.timestep = 1.0;
-  m.createLattice(def);
+  m.createLattice(walledChannel());
   const int mat = test::softMaterial(m, 2.0);
   test::addDisc(m, mat, Vec2(10, 30), 3.0, Vec2(0, -0.05));  // falls towards the lattice
   m.step();

@@ -26,21 +26,14 @@ Material grain(double e, double mu, NormalForce mode) {
   return m;
 }
 
+// A disc of radius 1 mm unless given (the shared helper, material first).
 int addDisc(Assembly& a, int material, Vec2 x, Vec2 v, double r = 1e-3) {
-  ElementDef d;
-  d.shape = std::make_unique<Disc>(r);
-  d.material = material;
-  d.x = x;
-  d.v = v;
-  return a.add(std::move(d));
+  return test::addDisc(a, x, r, v, material);
 }
 
+// A held floor along y = 0, 100 long.
 int addFloor(Assembly& a, int material) {
-  ElementDef w;
-  w.shape = std::make_unique<Wall>(100.0, 0.01);
-  w.material = material;
-  w.hold = holdX | holdY | holdRotation;
-  return a.add(std::move(w));
+  return test::addWall(a, Vec2(-50, 0), Vec2(50, 0), material, 0.01);
 }
 
 using test::runUntilApart;

@@ -27,13 +27,7 @@ struct Scene {
     m.friction = 0.4;
     const int sand = a.materials().add(m);
     auto wall = [&](Vec2 p, Vec2 q) { return test::addWall(a, p, q, sand); };
-    auto disc = [&](Vec2 x, double r) {
-      ElementDef d;
-      d.shape = std::make_unique<Disc>(r);
-      d.material = sand;
-      d.x = x;
-      return a.add(std::move(d));
-    };
+    auto disc = [&](Vec2 x, double r) { return test::addDisc(a, x, r, Vec2::Zero(), sand); };
     const double W = 0.02, H = 0.04;
     wall({0, 0}, {W, 0});
     wall({0, 0}, {0, H});
