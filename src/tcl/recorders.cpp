@@ -10,7 +10,9 @@ namespace sf::tcl {
 namespace {
 
 int recorderError(Tcl_Interp* interp, const Recorder& r, const Error& e) {
-  return fail(interp, e.code(), std::string(r.kind()) + " output " + r.path() + ": " + e.what());
+  return fail(
+      interp,
+      Error(e.code(), std::string(r.kind()) + " output " + r.path() + ": " + e.what(), e.remedy()));
 }
 
 // A record as an sf::Error whatever went wrong (a frame too large for memory

@@ -145,8 +145,10 @@ int Snapshot(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
                             try {
                               render::writePng(image, out);
                             } catch (const Error& e) {
-                              throw Error(e.code(), "writing \"" + path + "\" failed: " + e.what() +
-                                                        " (disk full?)");
+                              throw Error(
+                                  e.code(),
+                                  "writing \"" + path + "\" failed: " + e.what() + " (disk full?)",
+                                  e.remedy());
                             }
                           }}});
     Tcl_SetObjResult(interp, newString(path));

@@ -259,22 +259,22 @@ proc ::sf::gui::props::tidy {value} {
 # A choice whose default is empty (the view's -field: velocity with a
 # lattice, else none) lists that default as "auto": an empty field would
 # look like no value at all.
+proc ::sf::gui::props::hasAuto {row} {
+    expr {$row ne {} && [dict get $row type] eq "choice" && [dict get $row default] eq {}}
+}
 proc ::sf::gui::props::choices {row} {
     set choices [dict get $row choices]
-    if {[dict get $row default] eq {}} { set choices [linsert $choices 0 auto] }
+    if {[hasAuto $row]} { set choices [linsert $choices 0 auto] }
     return $choices
 }
+# (if, not expr's ?: which would turn a value such as 1.50 into 1.5)
 proc ::sf::gui::props::fieldOf {row value} {
-    if {$value eq {} && $row ne {} && [dict get $row type] eq "choice" &&
-        [dict get $row default] eq {}} {
-        return auto
-    }
+    if {$value eq {} && [hasAuto $row]} { return auto }
     return $value
 }
 proc ::sf::gui::props::valueOf {opt field} {
     set table [table]
-    if {$field eq "auto" && [dict exists $table $opt] && [dict get $table $opt type] eq "choice" &&
-        [dict get $table $opt default] eq {}} {
+    if {$field eq "auto" && [dict exists $table $opt] && [hasAuto [dict get $table $opt]]} {
         return {}
     }
     return $field

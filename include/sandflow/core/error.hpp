@@ -21,7 +21,7 @@ enum class Remedy : std::uint8_t {
   implicitCoupling,     // grains too light for the explicit coupling
   trtCollision,         // BGK's bounce-back walls slip at high tau
 };
-inline constexpr int kRemedyCount = 7;
+inline constexpr int kRemedyCount = int(Remedy::trtCollision) + 1;  // the last, plus one
 
 class Error : public std::runtime_error {
  public:
