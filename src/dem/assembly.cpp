@@ -296,6 +296,8 @@ void Assembly::step(double dt, const Vec2& gravity) {
     startForces(dt, gravity);  // its forces record their stages
     t0 = Clock::now();
   }
+  if (lastStep_ > 0 && dt != lastStep_) detail::changeStep(integrator, motion(), n, lastStep_, dt);
+  lastStep_ = dt;
   detail::preForce(integrator, motion(), n, dt, threads);
   t0 = profile.lap(Stage::demIntegrate, t0);
   contacts_.update(b, materials_, generation_, vectorPass);

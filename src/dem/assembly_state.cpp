@@ -44,6 +44,7 @@ void Assembly::saveState(ByteWriter& out) const {
   bonds_.save(out);
   sources_.save(out);
   out.put(time_);
+  out.put(lastStep_);
 }
 
 void Assembly::loadState(ByteReader& in) {
@@ -79,6 +80,9 @@ void Assembly::loadState(ByteReader& in) {
   bonds_.load(in, b);
   sources_.load(in, b);
   time_ = in.get<double>("time");
+  // Version 2 and before: unknown, and the next step starts afresh.
+  if (in.version >= 3) lastStep_ = in.get<double>("time");
+  if (!(lastStep_ >= 0 && std::isfinite(lastStep_))) ByteReader::fail("it holds a bad timestep");
 }
 
 }  // namespace sf::dem

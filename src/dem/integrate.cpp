@@ -87,6 +87,16 @@ void startCentral(const Motion& m, int n, double dt) {
 
 }  // namespace
 
+void changeStep(Integrator scheme, const Motion& m, int n, double from, double to) {
+  if (scheme != Integrator::central) return;  // the others keep v(t)
+  const double r = to / from;
+  for (int s = 0; s < n; ++s)
+    if (m.started[s]) {
+      m.vHalf[s] = m.v[s] - (m.v[s] - m.vHalf[s]) * r;
+      m.wHalf[s] = m.w[s] - (m.w[s] - m.wHalf[s]) * r;
+    }
+}
+
 void preForce(Integrator scheme, const Motion& m, int n, double dt, int threads) {
   if (scheme == Integrator::verlet) return overSlots(kickDriftRange, m, n, dt, threads);
   // Velocity-dependent forces (damping) use the last half-step velocity: the

@@ -35,5 +35,9 @@ void preForce(Integrator scheme, const Motion& m, int n, double dt, int threads)
 // so that central difference is second order from the first step; then
 // kick and drift. Euler: kick and drift. Verlet: the second half kick.
 void postForce(Integrator scheme, const Motion& m, int n, double dt, int threads);
+// Central difference keeps v(t - dt/2): a step of `to` after steps of `from`
+// needs v(t - to/2) = v(t) - (v(t) - v(t - from/2)) to/from instead, or the
+// change of step would kick every element by a (from - to)/2.
+void changeStep(Integrator scheme, const Motion& m, int n, double from, double to);
 
 }  // namespace sf::dem::detail

@@ -29,54 +29,61 @@ struct PassConstants {
   }
 };
 
+// The operator on one cell's pulled populations f: writes `out`, returns the
+// momentum it gave the fluid; rho and u2 (|u|^2 of the step's watch) besides.
+template <Collision C, ForceScheme S>
+SF_ALWAYS_INLINE Vec2 coverCell(const CoveredCell& cell, bool equilibriumInterior,
+                                const CollisionParams& p, const PassConstants& pass,
+                                const double (&f)[Q], double (&out)[Q], double& rho, double& u2) {
+  using namespace d2q9;
+  const double tau = pass.tau;
+  const double* source = pass.source;
+  double jx = 0, jy = 0;
+  rho = 0;
+  for (int i = 0; i < Q; ++i) rho += f[i], jx += ex[i] * f[i], jy += ey[i] * f[i];
+  double solid[Q];
+  equilibria(rho, cell.ux, cell.uy, solid);
+  // Momentum given to the fluid: sum_i e_i Omega^s_i = rho u_s - j exactly.
+  const Vec2 given(rho * cell.ux - jx, rho * cell.uy - jy);
+  if (cell.interior && equilibriumInterior) {
+    for (int i = 0; i < Q; ++i) out[i] = solid[i] + source[i];
+    u2 = (jx * jx + jy * jy) / (rho * rho);
+    return given;
+  }
+  double fluid[Q];
+  const double ux = jx / rho, uy = jy / rho;
+  u2 = ux * ux + uy * uy;
+  equilibria(rho, ux, uy, fluid);
+  const double b = cell.eps * (tau - 0.5) / ((1.0 - cell.eps) + (tau - 0.5));
+  if (b == 1.0) {  // fully covered (eps = 1): f + Omega^s + S, no fluid collision
+    for (int i = 0; i < Q; ++i)
+      out[i] = f[opposite[i]] + (solid[i] - fluid[opposite[i]]) + source[i];
+  } else {
+    double fc[Q];
+    for (int i = 0; i < Q; ++i) fc[i] = f[i];
+    collide<C, S>(fc, p, u2);
+    for (int i = 0; i < Q; ++i) {
+      const double omega = f[opposite[i]] - f[i] + solid[i] - fluid[opposite[i]];
+      out[i] = f[i] + (1.0 - b) * (fc[i] - f[i]) + b * (omega + source[i]);
+    }
+  }
+  return b * given;
+}
+
 template <Collision C, ForceScheme S>
 SF_KERNEL_CLONES StepStats runBlock(const StepContext& ctx, const CoveredNode& node,
                                     std::ptrdiff_t first, std::ptrdiff_t last) {
   using namespace d2q9;
-  const CollisionParams& p = ctx.params;
-  const PassConstants pass(p);
-  const double tau = pass.tau;
-  const double* source = pass.source;
+  const PassConstants pass(ctx.params);
   StepStats stats;
   for (std::ptrdiff_t k = first; k < last; ++k) {
     const CoveredCell& cell = node.cells[k];
-    double f[Q];
+    double f[Q], out[Q], rho, u2;
     for (int i = 0; i < Q; ++i)
       f[i] = ctx.src[i * ctx.stride + cell.node - (ex[i] + ey[i] * ctx.rowStride)];
-    double rho = 0, jx = 0, jy = 0;
-    for (int i = 0; i < Q; ++i) rho += f[i], jx += ex[i] * f[i], jy += ey[i] * f[i];
-    double solid[Q], out[Q];
-    equilibria(rho, cell.ux, cell.uy, solid);
-    // Momentum given to the fluid: sum_i e_i Omega^s_i = rho u_s - j exactly.
-    const Vec2 given(rho * cell.ux - jx, rho * cell.uy - jy);
-    Vec2 gave;
-    double u2;
-    if (cell.interior && node.equilibriumInterior) {
-      for (int i = 0; i < Q; ++i) out[i] = solid[i] + source[i];
-      gave = given;
-      u2 = (jx * jx + jy * jy) / (rho * rho);
-    } else {
-      double fluid[Q];
-      const double ux = jx / rho, uy = jy / rho;
-      u2 = ux * ux + uy * uy;
-      equilibria(rho, ux, uy, fluid);
-      const double b = cell.eps * (tau - 0.5) / ((1.0 - cell.eps) + (tau - 0.5));
-      if (b == 1.0) {  // fully covered (eps = 1): f + Omega^s + S, no fluid collision
-        for (int i = 0; i < Q; ++i)
-          out[i] = f[opposite[i]] + (solid[i] - fluid[opposite[i]]) + source[i];
-      } else {
-        double fc[Q];
-        for (int i = 0; i < Q; ++i) fc[i] = f[i];
-        collide<C, S>(fc, p, u2);
-        for (int i = 0; i < Q; ++i) {
-          const double omega = f[opposite[i]] - f[i] + solid[i] - fluid[opposite[i]];
-          out[i] = f[i] + (1.0 - b) * (fc[i] - f[i]) + b * (omega + source[i]);
-        }
-      }
-      gave = b * given;
-    }
+    node.exchange[k] =
+        coverCell<C, S>(cell, node.equilibriumInterior, ctx.params, pass, f, out, rho, u2);
     for (int i = 0; i < Q; ++i) ctx.dst[i * ctx.stride + cell.node] = out[i];
-    node.exchange[k] = gave;
     stats.merge({rho, u2});
   }
   return stats;
@@ -234,6 +241,20 @@ StepStats CoveredNode::run(const StepContext& ctx, std::ptrdiff_t first,
                : runBgkNodalLanes(ctx, *this, first, last);
   return guo ? runBlock<Collision::trt, ForceScheme::guo>(ctx, *this, first, last)
              : runBlock<Collision::trt, ForceScheme::nodal>(ctx, *this, first, last);
+}
+
+void CoveredNode::collideCell(const StepContext& ctx, const CoveredCell& cell,
+                              double (&f)[Q]) const {
+  const PassConstants pass(ctx.params);
+  double out[Q], rho, u2;
+  const bool guo = ctx.forceScheme == ForceScheme::guo, e = equilibriumInterior;
+  if (ctx.collision == Collision::bgk)
+    guo ? coverCell<Collision::bgk, ForceScheme::guo>(cell, e, ctx.params, pass, f, out, rho, u2)
+        : coverCell<Collision::bgk, ForceScheme::nodal>(cell, e, ctx.params, pass, f, out, rho, u2);
+  else
+    guo ? coverCell<Collision::trt, ForceScheme::guo>(cell, e, ctx.params, pass, f, out, rho, u2)
+        : coverCell<Collision::trt, ForceScheme::nodal>(cell, e, ctx.params, pass, f, out, rho, u2);
+  for (int i = 0; i < Q; ++i) f[i] = out[i];
 }
 
 StepStats CoveredNode::streamCollide(const StepContext& ctx) const {

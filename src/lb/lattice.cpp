@@ -65,34 +65,53 @@ void Lattice::reconfigure(const ResolvedLattice& params) {
   if (params.def.density != p_.def.density)
     throw Error("VALUE DENSITY",
                 "the density is the initial state: it cannot change on a live lattice");
+  ResolvedLattice next = params;
+  // A pressure side the change leaves alone keeps its excess over the
+  // reference pressure c_s^2 rho0, as the fluid's pressure does (c_s follows dt).
+  const double cs2 = p_.soundSpeed() * p_.soundSpeed();
+  const double cs2Next = next.soundSpeed() * next.soundSpeed();
+  for (int s = 0; s < 4; ++s) {
+    SideDef& side = next.def.sides[s];
+    const SideDef& was = p_.def.sides[s];
+    if (side.kind == SideKind::pressure && was.kind == SideKind::pressure &&
+        side.pressure == was.pressure)
+      side.pressure += (cs2Next - cs2) * p_.def.density;
+  }
   const bool wallsChanged = [&] {
     for (int s = 0; s < 4; ++s) {
-      const SideDef &a = params.def.sides[s], &b = p_.def.sides[s];
+      const SideDef &a = next.def.sides[s], &b = p_.def.sides[s];
       if (a.kind != b.kind || a.velocity != b.velocity || a.pressure != b.pressure) return true;
     }
-    return params.dt != p_.dt;  // wall terms are in lattice units
+    return next.dt != p_.dt;  // wall terms are in lattice units
   }();
-  p_ = params;
-  if (wallsChanged) rebuildTopology();
+  const bool stepChanged = next.dt != p_.dt || next.tau != p_.tau ||
+                           next.tauMinus() != p_.tauMinus() || next.def.forcing != p_.def.forcing ||
+                           next.def.collision != p_.def.collision ||
+                           next.def.forceScheme != p_.def.forceScheme;
+  if (stepChanged) convertPopulations(next);
+  p_ = next;
+  if (wallsChanged)
+    rebuildTopology();  // fills the walls' slots
+  else if (stepChanged)
+    for (const auto& k : kinds_) k->fill(f_, threads_);
 }
 
 void Lattice::setThreads(int threads) {
   threads_ = std::max(1, threads);
 }
 
-StepContext Lattice::context() const {
+StepContext Lattice::contextFor(const ResolvedLattice& p) const {
   StepContext c;
   c.src = f_;
   c.dst = g_;
   c.stride = stride_;
   c.rowStride = rowStride_;
-  c.collision = p_.def.collision;
-  c.forceScheme = p_.def.forceScheme;
-  c.params.omegaPlus = 1.0 / p_.tau;
-  // TRT: Lambda = (tau+ - 1/2)(tau- - 1/2) fixes the antisymmetric rate.
-  c.params.omegaMinus = 1.0 / (p_.def.magic / (p_.tau - 0.5) + 0.5);
-  c.params.fx = p_.forceToLattice(p_.def.forcing.x());
-  c.params.fy = p_.forceToLattice(p_.def.forcing.y());
+  c.collision = p.def.collision;
+  c.forceScheme = p.def.forceScheme;
+  c.params.omegaPlus = 1.0 / p.tau;
+  c.params.omegaMinus = 1.0 / p.tauMinus();
+  c.params.fx = p.forceToLattice(p.def.forcing.x());
+  c.params.fy = p.forceToLattice(p.def.forcing.y());
   c.threads = threads_;
   return c;
 }
@@ -295,23 +314,21 @@ void Lattice::initialize(const std::function<void(const Vec2&, double&, Vec2&)>&
 
 void Lattice::setNodeState(std::int64_t x, double rho, const Vec2& u) {
   canUndo_ = false;
+  double f[9];
+  collidedEquilibrium(context(), rho, u, f);
+  for (int d = 0; d < 9; ++d) f_[d * stride_ + x] = f[d];
+}
+
+void Lattice::collidedEquilibrium(const StepContext& ctx, double rho, const Vec2& u,
+                                  double (&f)[9]) {
   // Stored populations are post-collision: collide an equilibrium whose
   // collision velocity is u, so that the node reports u (and the force acts
   // from t = 0 on).
-  const StepContext ctx = context();
   const double back = ctx.forceScheme == ForceScheme::guo ? 0.5 : 0.0;
   const Vec2 ueq = u - back * Vec2(ctx.params.fx, ctx.params.fy) / rho;
-  double f[9];
-  for (int d = 0; d < 9; ++d) f[d] = equilibrium(d, rho, ueq.x(), ueq.y());
+  equilibria(rho, ueq.x(), ueq.y(), f);
   double u2;
-  const bool guo = ctx.forceScheme == ForceScheme::guo;
-  if (ctx.collision == Collision::bgk)
-    guo ? collide<Collision::bgk, ForceScheme::guo>(f, ctx.params, u2)
-        : collide<Collision::bgk, ForceScheme::nodal>(f, ctx.params, u2);
-  else
-    guo ? collide<Collision::trt, ForceScheme::guo>(f, ctx.params, u2)
-        : collide<Collision::trt, ForceScheme::nodal>(f, ctx.params, u2);
-  for (int d = 0; d < 9; ++d) f_[d * stride_ + x] = f[d];
+  collide(ctx.collision, ctx.forceScheme, f, ctx.params, u2);
 }
 
 double Lattice::population(int direction, int i, int j) const {

@@ -29,40 +29,59 @@ Vec2 rotateBack(const Vec2& v, int k) {  // rotate clockwise by k quarter turns
   return r;
 }
 
+// The side's frame: local direction -> global, and the imposed velocity and
+// Guo's half force turned into it.
+struct Frame {
+  int g[Q];
+  Vec2 u, half;
+  Frame(const ZouHeNode& z, const StepContext& ctx) {
+    const int k = quarterTurns(z.side);
+    for (int j = 0; j < Q; ++j) g[j] = d2q9::rotate(j, k);
+    u = rotateBack(z.velocity, k);
+    // Guo forcing defines the velocity with half the force: the rebuilt first
+    // moment must be rho u - F/2 for the node to see velocity u.
+    half = ctx.forceScheme == ForceScheme::guo
+               ? Vec2(rotateBack(Vec2(ctx.params.fx, ctx.params.fy), k) * 0.5)
+               : Vec2(Vec2::Zero());
+  }
+};
+
+// Replaces the three populations of `f` (global directions) that would come
+// from outside the side with Zou and He's.
+void rebuildUnknowns(const ZouHeNode& z, const Frame& fr, double (&f)[Q]) {
+  const int* g = fr.g;
+  // Known populations in the local frame: 0, 3, 7 (tangential), 4, 5, 6 (outgoing).
+  const double tangential = f[g[0]] + f[g[3]] + f[g[7]];
+  const double outgoing = f[g[4]] + f[g[5]] + f[g[6]];
+  double rho, jx, jy;
+  if (z.pressure) {
+    rho = z.density;
+    jx = rho - tangential - 2 * outgoing;
+    jy = -fr.half.y();
+  } else {
+    rho = (tangential + 2 * outgoing - fr.half.x()) / (1 - fr.u.x());
+    jx = rho * fr.u.x() - fr.half.x();
+    jy = rho * fr.u.y() - fr.half.y();
+  }
+  const double shear = 0.5 * (f[g[3]] - f[g[7]]);
+  f[g[1]] = f[g[5]] + 2.0 / 3.0 * jx;
+  f[g[2]] = f[g[6]] - shear + jx / 6 + 0.5 * jy;
+  f[g[8]] = f[g[4]] + shear + jx / 6 - 0.5 * jy;
+}
+
+void pull(const StepContext& ctx, std::int64_t node, double (&f)[Q]) {
+  for (int i = 0; i < Q; ++i)
+    f[i] = ctx.src[i * ctx.stride + node - d2q9::ex[i] - d2q9::ey[i] * ctx.rowStride];
+}
+
 template <Collision C, ForceScheme S>
 StepStats run(const ZouHeNode& z, const StepContext& ctx) {
-  const int k = quarterTurns(z.side);
-  int g[Q];  // local direction -> global direction
-  for (int j = 0; j < Q; ++j) g[j] = d2q9::rotate(j, k);
-  const Vec2 u = rotateBack(z.velocity, k);
-  // Guo forcing defines the velocity with half the force: the rebuilt first moment
-  // must be rho u - F/2 for the node to see velocity u.
-  const Vec2 half = S == ForceScheme::guo
-                        ? Vec2(rotateBack(Vec2(ctx.params.fx, ctx.params.fy), k) * 0.5)
-                        : Vec2(Vec2::Zero());
+  const Frame frame(z, ctx);
   StepStats stats;
   for (const std::int64_t node : z.nodes) {
     double f[Q];
-    for (int i = 0; i < Q; ++i)
-      f[i] = ctx.src[i * ctx.stride + node - d2q9::ex[i] - d2q9::ey[i] * ctx.rowStride];
-    // Known populations in the local frame: 0, 3, 7 (tangential), 4, 5, 6 (outgoing).
-    const double tangential = f[g[0]] + f[g[3]] + f[g[7]];
-    const double outgoing = f[g[4]] + f[g[5]] + f[g[6]];
-    double rho, jx, jy;
-    if (z.pressure) {
-      rho = z.density;
-      jx = rho - tangential - 2 * outgoing;
-      jy = -half.y();
-    } else {
-      rho = (tangential + 2 * outgoing - half.x()) / (1 - u.x());
-      jx = rho * u.x() - half.x();
-      jy = rho * u.y() - half.y();
-    }
-    const double shear = 0.5 * (f[g[3]] - f[g[7]]);
-    f[g[1]] = f[g[5]] + 2.0 / 3.0 * jx;
-    f[g[2]] = f[g[6]] - shear + jx / 6 + 0.5 * jy;
-    f[g[8]] = f[g[4]] + shear + jx / 6 - 0.5 * jy;
-
+    pull(ctx, node, f);
+    rebuildUnknowns(z, frame, f);
     double u2;
     const double density = collide<C, S>(f, ctx.params, u2);
     stats.merge({density, u2});
@@ -80,6 +99,11 @@ StepStats ZouHeNode::streamCollide(const StepContext& ctx) const {
                : run<Collision::bgk, ForceScheme::nodal>(*this, ctx);
   return guo ? run<Collision::trt, ForceScheme::guo>(*this, ctx)
              : run<Collision::trt, ForceScheme::nodal>(*this, ctx);
+}
+
+void ZouHeNode::pulled(const StepContext& ctx, std::int64_t node, double (&f)[Q]) const {
+  pull(ctx, node, f);
+  rebuildUnknowns(*this, Frame(*this, ctx), f);
 }
 
 }  // namespace sf::lb

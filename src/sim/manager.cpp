@@ -62,9 +62,8 @@ void Manager::createLattice(lb::LatticeDef def) {
 }
 
 void Manager::reconfigureLattice(const lb::LatticeDef& def) {
-  lattice().reconfigure(lb::resolve(def));
-  if (fixedTimestep_) fixedTimestep_ = lattice_->params().dt;
-  checkCollision();
+  lattice();  // there must be one
+  configureStep(def, std::nullopt, std::nullopt);
 }
 
 // Given when the lattice is made or changed, and (for obstacles added since,
@@ -253,25 +252,41 @@ void Manager::checkCellReynolds() {
 }
 
 void Manager::setStepping(std::optional<double> dt, std::optional<int> substeps) {
+  configureStep(std::nullopt, dt, substeps);
+}
+
+void Manager::configureStep(const std::optional<lb::LatticeDef>& def, std::optional<double> dt,
+                            std::optional<int> substeps) {
   const int n = substeps.value_or(substeps_);
   if (n < 1 || n > 1000)
     throw Error("VALUE SUBSTEPS", "substeps must be 1 to 1000, got " + std::to_string(n));
-  if (dt) {
-    if (!(*dt > 0) || !std::isfinite(*dt))
-      throw Error("VALUE TIMESTEP", "a timestep must be > 0, got " + formatNumber(*dt));
-    checkDemTimestep(*dt / n);
-    if (lattice_) {  // may refuse (tau); nothing has changed yet
-      lb::LatticeDef def = lattice_->params().def;
-      def.viscosity = lattice_->params().viscosity;
-      def.tau.reset();
-      def.timestep = *dt;
-      lattice_->reconfigure(lb::resolve(def));
+  if (dt && (!(*dt > 0) || !std::isfinite(*dt)))
+    throw Error("VALUE TIMESTEP", "a timestep must be > 0, got " + formatNumber(*dt));
+  // Everything is checked before anything changes; the lattice converts its
+  // populations once (may refuse: tau).
+  std::optional<lb::ResolvedLattice> next;
+  if (lattice_ && (def || dt)) {
+    lb::LatticeDef d = def.value_or(lattice_->params().def);
+    if (dt) {  // the viscosity stays and tau follows
+      d.viscosity = lb::resolve(d).viscosity;
+      d.tau.reset();
+      d.timestep = *dt;
     }
-    fixedTimestep_ = *dt;
-  } else if (!assembly_.empty() && timestep() > 0) {
-    checkDemTimestep(timestep() / n);
+    next = lb::resolve(d);
   }
+  if (dt) {
+    checkDemTimestep(*dt / n);
+  } else if (substeps && !assembly_.empty()) {
+    const double step = next ? next->dt : timestep();
+    if (step > 0) checkDemTimestep(step / n);
+  }
+  if (next) lattice_->reconfigure(*next);
+  if (dt)
+    fixedTimestep_ = *dt;
+  else if (fixedTimestep_ && next)
+    fixedTimestep_ = next->dt;
   substeps_ = n;
+  if (next) checkCollision();
 }
 
 void Manager::setThreads(int threads) {

@@ -202,26 +202,25 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
   const bool preset = given[kAccuracy] && stage.accuracy != kCustomAccuracy;
   if (preset) stagePreset(stage, given);
   const int code = guarded(interp, [&] {
-    // The only steps that can refuse, before anything else changes: the
-    // preset's lattice (its tau sets the timestep), then the stepping; a
-    // refused stepping puts the lattice back.
-    std::optional<lb::LatticeDef> before;
+    // The only settings that can refuse, all checked before anything changes:
+    // the preset's lattice (its tau sets the timestep), then the stepping.
+    std::optional<lb::LatticeDef> latticeDef;
     if (preset && m.hasLattice()) {
-      before = m.lattice().params().def;
+      latticeDef = presetLattice(m.lattice().params(), accuracyPreset(stage.accuracy));
       try {
-        m.reconfigureLattice(presetLattice(m.lattice().params(), accuracyPreset(stage.accuracy)));
+        lb::resolve(*latticeDef);
       } catch (const Error& e) {
         fail(interp, e);
         noteOptionOnce(interp, "-accuracy");
         return TCL_ERROR;
       }
     }
-    if (given[kTimestep] || given[kSubsteps]) {
+    if (latticeDef || given[kTimestep] || given[kSubsteps]) {
       try {
-        m.setStepping(given[kTimestep] ? std::optional<double>(stage.timestep) : std::nullopt,
-                      given[kSubsteps] ? std::optional<int>(stage.substeps) : std::nullopt);
+        m.configureStep(latticeDef,
+                        given[kTimestep] ? std::optional<double>(stage.timestep) : std::nullopt,
+                        given[kSubsteps] ? std::optional<int>(stage.substeps) : std::nullopt);
       } catch (const Error& e) {
-        if (before) m.reconfigureLattice(*before);
         fail(interp, e);
         noteOptionOnce(interp, given[kSubsteps] && !given[kTimestep] ? "-substeps" : "-timestep");
         return TCL_ERROR;

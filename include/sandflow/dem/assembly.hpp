@@ -183,6 +183,7 @@ class Assembly {
   std::vector<Vec2> spareForce_;
   std::vector<double> spareTorque_;
   double time_ = 0;
+  double lastStep_ = 0;  // of the last step, 0 before the first (detail::changeStep)
 };
 
 }  // namespace sf::dem

@@ -141,4 +141,15 @@ SF_ALWAYS_INLINE double collide(double (&f)[d2q9::Q], const CollisionParams& p, 
   return collide<C, S>(f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], f[8], p, u2);
 }
 
+// The same chosen at run time, for work off the hot path.
+inline double collide(Collision c, ForceScheme s, double (&f)[d2q9::Q], const CollisionParams& p,
+                      double& u2) {
+  const bool guo = s == ForceScheme::guo;
+  if (c == Collision::bgk)
+    return guo ? collide<Collision::bgk, ForceScheme::guo>(f, p, u2)
+               : collide<Collision::bgk, ForceScheme::nodal>(f, p, u2);
+  return guo ? collide<Collision::trt, ForceScheme::guo>(f, p, u2)
+             : collide<Collision::trt, ForceScheme::nodal>(f, p, u2);
+}
+
 }  // namespace sf::lb

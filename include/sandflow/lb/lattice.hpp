@@ -64,6 +64,9 @@ class Lattice {
 
   // Changes what may change on a live lattice (tau, viscosity, timestep, forcing,
   // walls, collision); the grid itself may not. Validated before anything changes.
+  // The physical flow carries over: velocity, pressure and the viscous stress
+  // (convertPopulations); a pressure side the change leaves alone keeps its
+  // excess over the reference pressure c_s^2 rho0.
   void reconfigure(const ResolvedLattice& params);
 
   // One step. On NaN or a Mach number above `machLimit` it throws sf::Error
@@ -156,7 +159,15 @@ class Lattice {
  private:
   std::int64_t index(int i, int j) const { return std::int64_t(j + 1) * rowStride_ + (i + 1); }
   void rebuildTopology();
-  StepContext context() const;
+  StepContext context() const { return contextFor(p_); }
+  StepContext contextFor(const ResolvedLattice& params) const;
+  // Rewrites the populations for `next` from the present parameters, keeping
+  // the physical state (lattice_convert.cpp).
+  void convertPopulations(const ResolvedLattice& next);
+  // The post-collision populations of a node at rest in equilibrium at rho, u
+  // (lattice units) under ctx's collision and forcing.
+  static void collidedEquilibrium(const StepContext& ctx, double rho, const Vec2& u,
+                                  double (&f)[9]);
   bool holdsFluid(std::int64_t node) const;
   void setNodeState(std::int64_t node, double rho, const Vec2& latticeU);
   Vec2 latticeVelocity(std::int64_t node) const;

@@ -47,6 +47,11 @@ struct ResolvedLattice {
   int nx = 0, ny = 0;
   double h = 0.0, dt = 0.0, tau = 0.0, viscosity = 0.0;
   double latticeSpeed() const { return h / dt; }
+  // The antisymmetric relaxation time: TRT's from the magic product
+  // Lambda = (tau - 1/2)(tau- - 1/2), BGK's tau itself.
+  double tauMinus() const {
+    return def.collision == Collision::trt ? def.magic / (tau - 0.5) + 0.5 : tau;
+  }
   double soundSpeed() const;
   // Conversions between physical and lattice units.
   double velocityToLattice(double v) const { return v * dt / h; }

@@ -160,6 +160,9 @@ class CoveredNode final : public Node {
   StepStats streamCollide(const StepContext& ctx) const override;
   // Cells [first, last) alone; `exchange` must hold every cell already.
   StepStats run(const StepContext& ctx, std::ptrdiff_t first, std::ptrdiff_t last) const;
+  // The operator on one cell's pre-collision populations, in place (the
+  // scalar form of the step's).
+  void collideCell(const StepContext& ctx, const CoveredCell& cell, double (&f)[d2q9::Q]) const;
 };
 
 // Interior of fixed solids: removed from the work; kept to be counted.
@@ -182,6 +185,9 @@ class ZouHeNode final : public Node {
   const char* name() const override { return pressure ? "pressure" : "velocity"; }
   std::size_t count() const override { return nodes.size(); }
   StepStats streamCollide(const StepContext& ctx) const override;
+  // The populations `node` pulls from ctx.src, the ones from outside rebuilt:
+  // what its next collision will see.
+  void pulled(const StepContext& ctx, std::int64_t node, double (&f)[d2q9::Q]) const;
 };
 
 }  // namespace sf::lb

@@ -50,6 +50,11 @@ class Manager {
   // step dt / substeps must stay under their critical step. Refuses before
   // changing anything.
   void setStepping(std::optional<double> dt, std::optional<int> substeps);
+  // A new lattice definition (of a live lattice), timestep and substeps at
+  // once, as an accuracy set changes them: all are checked before any
+  // changes, and the lattice converts its flow once (Lattice::reconfigure).
+  void configureStep(const std::optional<lb::LatticeDef>& def, std::optional<double> dt,
+                     std::optional<int> substeps);
   // The thread counts a step may use (sim configure -threads checks the same).
   static constexpr int kMaxThreads = 1024;
   int threads() const { return threads_; }
