@@ -263,7 +263,7 @@ int main(int argc, char** argv) {
   }
 
   Assembly a;
-  a.threads = *std::max_element(threadList.begin(), threadList.end());
+  a.setThreads(*std::max_element(threadList.begin(), threadList.end()));
   // Beside another code: this one keeps to CPU 0 until that one is done.
   cpu_set_t everyCpu;
   sched_getaffinity(0, sizeof everyCpu, &everyCpu);
@@ -279,7 +279,7 @@ int main(int argc, char** argv) {
     std::sort(threadList.begin(), threadList.end());
     // The code beside starts from this one's settled bed: until it is
     // written, this one has the machine to itself.
-    if (lammpsData.empty()) pinToFirstCpu(), a.threads = 1;
+    if (lammpsData.empty()) pinToFirstCpu(), a.setThreads(1);
   }
   // The fall's impacts press discs deep at this stiffness: up to 0.57 of the
   // smaller radius at N = 100,000, past sandflow's default safety limit of 0.5
@@ -394,7 +394,7 @@ int main(int argc, char** argv) {
     sched_setaffinity(0, sizeof everyCpu, &everyCpu);
   };
   for (int threads : timed > 0 ? threadList : std::vector<int>{}) {
-    a.threads = threads;
+    a.setThreads(threads);
     // From this code's settled bed the other code times only its 2,000 steps,
     // over by the end of this one's repetitions: the stamped phases first.
     const bool besideHere = !beside.empty() && threads == 1;

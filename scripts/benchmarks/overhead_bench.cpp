@@ -90,7 +90,7 @@ void BM_DemBare(benchmark::State& state) {
   for (auto _ : state) {
     state.PauseTiming();
     dem::Assembly a;
-    a.threads = gThreads;
+    a.setThreads(gThreads);
     addDiscs(a, 0);
     state.ResumeTiming();
     for (int k = 0; k < kDemSteps; ++k) a.step(1.0, Vec2::Zero());
@@ -133,7 +133,7 @@ void BM_DemBareShort(benchmark::State& state) {
   for (auto _ : state) {
     state.PauseTiming();
     dem::Assembly a;
-    a.threads = gThreads;
+    a.setThreads(gThreads);
     addDiscs(a, kApart);
     a.step(1.0, Vec2::Zero());
     state.ResumeTiming();

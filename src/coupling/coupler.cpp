@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "coupler_detail.hpp"
+#include "sandflow/core/parallel.hpp"
 #include "sandflow/core/prefetch.hpp"
 #include "sandflow/dem/shape.hpp"
 
@@ -80,9 +81,9 @@ bool Coupler::stale(const Cached& c, int id, const Vec2& x, double angle, double
 }
 
 void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const Settings& settings,
-                      const Vec2& gravity, int threads) {
+                      const Vec2& gravity) {
   const auto t0 = Clock::now();
-  threads_ = threads;
+  const int threads = threads_.get();
   Grid grid = gridOf(lattice);
   const dem::Bodies& b = assembly.bodies();
   const int n = b.size();
@@ -127,7 +128,7 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
           {std::uint32_t(lattice.nodeIndex(i, j)), std::int32_t(m), std::int32_t(end - m)});
     }
   };
-#pragma omp parallel for schedule(dynamic, 4) num_threads(threads) if (n >= 16)
+#pragma omp parallel for schedule(dynamic, 4) num_threads(threads) if (n >= parallel::kCoverSolids)
   for (int s = 0; s < n; ++s) {
     Cached& c = elements_[s];
     if (!covers(b, s)) {
@@ -192,13 +193,14 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     solveVelocities(lattice, assembly, settings, cells, gravity);
     blendVelocities(lattice, circles, cells);
     // The first fastest cell of each chunk of cells.
-    const std::ptrdiff_t cellChunks = (std::ptrdiff_t(total) + kChunk - 1) / kChunk;
+    const std::ptrdiff_t cellChunks =
+        (std::ptrdiff_t(total) + parallel::kCellChunk - 1) / parallel::kCellChunk;
     chunkFastest_.assign(cellChunks, Fastest{});
 #pragma omp parallel for schedule(static) num_threads(threads) if (cellChunks > 1)
     for (std::ptrdiff_t c = 0; c < cellChunks; ++c) {
       Fastest best;
-      for (std::ptrdiff_t k = c * kChunk; k < std::min(std::ptrdiff_t(total), (c + 1) * kChunk);
-           ++k) {
+      for (std::ptrdiff_t k = c * parallel::kCellChunk;
+           k < std::min(std::ptrdiff_t(total), (c + 1) * parallel::kCellChunk); ++k) {
         const double u2 = cells[k].ux * cells[k].ux + cells[k].uy * cells[k].uy;
         if (!cells[k].interior && u2 > best.u2) best = {u2, pieceOwner_[order_[cellStart_[k]]]};
       }
@@ -263,7 +265,8 @@ void Coupler::blendVelocities(const lb::Lattice& lattice,
   const double toLattice = lattice.params().dt / lattice.params().h;
   const std::ptrdiff_t count = std::ptrdiff_t(cells.size());
   // Cell by cell over its pieces in a fixed order: any thread count, same sums.
-#pragma omp parallel for schedule(static) num_threads(threads_) if (count >= 16384)
+#pragma omp parallel for schedule(static) \
+    num_threads(threads_.get()) if (count >= parallel::kBlendCells)
   for (std::ptrdiff_t c = 0; c < count; ++c) {
     const Vec2 u = cellVelocity(cellStart_[c], cellStart_[c + 1], epsSum_[c], circles, toLattice);
     cells[c].ux = u.x();
@@ -368,9 +371,10 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
     std::fill(pieceOwner_.begin() + pieceStart_[o], pieceOwner_.begin() + pieceStart_[o + 1], o);
   // Tasks of a quarter chunk, taken as threads come free: the cores of a
   // shared machine do not keep the same speed (fluid_node.cpp's sweep).
-  const std::ptrdiff_t tasks = std::max<std::ptrdiff_t>(1, std::ptrdiff_t(total) / (kChunk / 4));
+  const std::ptrdiff_t tasks =
+      std::max<std::ptrdiff_t>(1, std::ptrdiff_t(total) / (parallel::kCellChunk / 4));
   chunkFastest_.assign(tasks, Fastest{});
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads_) if (tasks > 1)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads_.get()) if (tasks > 1)
   for (std::ptrdiff_t t = 0; t < tasks; ++t) {
     Fastest best;
     const std::ptrdiff_t qEnd = groups * (t + 1) / tasks;
@@ -464,7 +468,8 @@ void Coupler::collect(lb::Lattice& lattice, dem::Assembly& assembly, const Setti
   // Owner by owner over its pieces, in their order: the sums do not depend on
   // the thread count.
   const int n = b.size(), owners = n + int(circles.size());
-#pragma omp parallel for schedule(dynamic, 16) num_threads(threads_) if (owners >= 64)
+#pragma omp parallel for schedule(dynamic, 16) \
+    num_threads(threads_.get()) if (owners >= parallel::kLoadOwners)
   for (int o = 0; o < owners; ++o) {
     Vec2 force = Vec2::Zero();
     double torque = 0, area = 0;

@@ -163,7 +163,7 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
   t0 = profile.lap(Stage::demSums, t0);
   // Each contact's damping and normal-force mode for the step (law_columns.cpp).
   contacts_.prepareDamping(b, materials_, generation_, dt);
-  const std::size_t bad = contacts_.evaluate(b, vel, omega, dt, maxOverlap, threads);
+  const std::size_t bad = contacts_.evaluate(b, vel, omega, dt, maxOverlap, threads());
   t0 = profile.lap(Stage::demContacts, t0);
   const ContactList& l = contacts_.list();
   if (bad < l.size())  // the history stays as it was (the step does not commit)
@@ -298,7 +298,7 @@ void Assembly::step(double dt, const Vec2& gravity) {
   }
   if (lastStep_ > 0 && dt != lastStep_) detail::changeStep(integrator, motion(), n, lastStep_, dt);
   lastStep_ = dt;
-  detail::preForce(integrator, motion(), n, dt, threads);
+  detail::preForce(integrator, motion(), n, dt, threads());
   t0 = profile.lap(Stage::demIntegrate, t0);
   contacts_.update(b, materials_, generation_, vectorPass);
   profile.lap(Stage::demPairs, t0);
@@ -315,7 +315,7 @@ void Assembly::step(double dt, const Vec2& gravity) {
   }
   commitStep();
   plates_.servo(b, materials_, contacts_.list(), generation_, dt);
-  detail::postForce(integrator, motion(), n, dt, threads);
+  detail::postForce(integrator, motion(), n, dt, threads());
   time_ += dt;
   if (!sources_.empty())
     sources_.spawn(b, time_, [this](ElementDef d) { return add(std::move(d)); });

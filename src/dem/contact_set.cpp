@@ -10,6 +10,7 @@
 
 #include "contact_force.hpp"
 #include "disc_contacts.hpp"
+#include "sandflow/core/parallel.hpp"
 #include "sandflow/dem/narrow_phase.hpp"
 
 namespace sf::dem {
@@ -209,7 +210,7 @@ std::size_t ContactSet::evaluate(const Bodies& b, const std::vector<Vec2>& vel,
   // The next history and the results of every contact: the linear disc pairs
   // many at a time, the others one by one. Few contacts stay on one thread: a
   // parallel region would cost more.
-  const int team = nc >= 512 ? std::max(threads, 1) : 1;
+  const int team = parallel::team(std::ptrdiff_t(nc), parallel::kContactPairs, threads);
   std::size_t bad = nc;  // the first contact that stops the step
   if (team == 1) {
     const std::size_t first = detail::linearDiscContacts(l, 0, nv, in, lawColumns);

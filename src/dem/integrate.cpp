@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "sandflow/core/parallel.hpp"
+
 namespace sf::dem::detail {
 namespace {
 
@@ -66,7 +68,7 @@ void advanceRange(const Motion& in, int begin, int end, double dt) {
 // a few thousand slots a parallel region costs more than it saves.
 template <class Range>
 void overSlots(Range range, const Motion& m, int n, double dt, int threads) {
-  const int t = n >= 2048 ? std::max(threads, 1) : 1;
+  const int t = parallel::team(n, parallel::kIntegrateSlots, threads);
   if (t == 1) return range(m, 0, n, dt);
 #pragma omp parallel num_threads(t)
   {

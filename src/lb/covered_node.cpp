@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sandflow/core/kernel_isa.hpp"
+#include "sandflow/core/parallel.hpp"
 #include "sandflow/lb/collision.hpp"
 #include "sandflow/lb/node.hpp"
 
@@ -263,7 +264,8 @@ StepStats CoveredNode::streamCollide(const StepContext& ctx) const {
   const std::ptrdiff_t blocks = (n + kBlock - 1) / kBlock;
   std::vector<StepStats> partial(blocks);
   // Blocks taken as threads come free (the sweep's reason, fluid_node.cpp).
-#pragma omp parallel for schedule(dynamic, 4) num_threads(ctx.threads) if (n >= kParallelNodes)
+#pragma omp parallel for schedule(dynamic, 4) \
+    num_threads(ctx.threads) if (n >= parallel::kLatticeNodes)
   for (std::ptrdiff_t b = 0; b < blocks; ++b)
     partial[b] = run(ctx, b * kBlock, std::min(n, (b + 1) * kBlock));
   StepStats total;

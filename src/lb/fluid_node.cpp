@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sandflow/core/kernel_isa.hpp"
+#include "sandflow/core/parallel.hpp"
 #include "sandflow/core/prefetch.hpp"
 #include "sandflow/lb/node.hpp"
 
@@ -80,7 +81,7 @@ StepStats runSpans(const StepContext& ctx, const std::vector<FluidNode::Span>& s
   const int grab =
       int(std::max<std::ptrdiff_t>(1, kGrabNodes * n / std::max<std::ptrdiff_t>(1, nodes)));
 #pragma omp parallel for schedule(dynamic, grab) \
-    num_threads(ctx.threads) if (nodes >= kParallelNodes)
+    num_threads(ctx.threads) if (nodes >= parallel::kLatticeNodes)
   for (std::ptrdiff_t k = 0; k < n; ++k)
     partial[k] = runSpan<C, S>(ctx, spans[k].first, spans[k].length);
   StepStats total;
@@ -101,7 +102,7 @@ StepStats sweep(const StepContext& ctx, const std::vector<FluidNode::Span>& span
   std::ptrdiff_t nodes = 0;
   for (const FluidNode::Span& s : spans) nodes += s.length;
   covered.exchange.resize(covered.cells.size());
-  const bool parallel = nodes >= kParallelNodes;
+  const bool parallel = nodes >= parallel::kLatticeNodes;
   // Blocks handed out one at a time as threads come free: the cores of a
   // shared machine do not keep the same speed, and with halves fixed in
   // advance one of two threads sat idle for 0.9 ms of a 6 ms sweep (AMD EPYC,

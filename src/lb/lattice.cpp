@@ -45,7 +45,7 @@ Lattice::Lattice(const ResolvedLattice& params) : p_(params) {
     double* a = f_ + d * stride_;
     double* b = g_ + d * stride_;
     const double value = d2q9::w[d] * rho0;
-#pragma omp parallel for schedule(static) num_threads(threads_)
+#pragma omp parallel for schedule(static) num_threads(threads_.get())
     for (std::ptrdiff_t k = 0; k < n; ++k) a[k] = b[k] = value;
   }
   rebuildTopology();
@@ -93,11 +93,11 @@ void Lattice::reconfigure(const ResolvedLattice& params) {
   if (wallsChanged)
     rebuildTopology();  // fills the walls' slots
   else if (stepChanged)
-    for (const auto& k : kinds_) k->fill(f_, threads_);
+    for (const auto& k : kinds_) k->fill(f_, threads_.get());
 }
 
 void Lattice::setThreads(int threads) {
-  threads_ = std::max(1, threads);
+  threads_.set(threads);
 }
 
 StepContext Lattice::contextFor(const ResolvedLattice& p) const {
@@ -112,7 +112,7 @@ StepContext Lattice::contextFor(const ResolvedLattice& p) const {
   c.params.omegaMinus = 1.0 / p.tauMinus();
   c.params.fx = p.forceToLattice(p.def.forcing.x());
   c.params.fy = p.forceToLattice(p.def.forcing.y());
-  c.threads = threads_;
+  c.threads = threads_.get();
   return c;
 }
 
@@ -144,7 +144,7 @@ StepStats Lattice::step(double machLimit) {
   if (!std::isfinite(stats.mass) || !(stats.maxU2 <= machLimit * machLimit))
     reportInstability(stats, machLimit);
   std::swap(f_, g_);
-  for (const auto& k : kinds_) k->fill(f_, threads_);
+  for (const auto& k : kinds_) k->fill(f_, threads_.get());
   lastMach_ = std::sqrt(stats.maxU2);
   canUndo_ = true;
   profile.lap(Stage::latticeFill, t2);
@@ -286,7 +286,7 @@ double Lattice::maxMach() const {
   // Rows on the step's threads: the status line asks for this every frame. A
   // maximum is the same in any order, so the result does not depend on them.
   double u2 = 0;
-#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : u2)
+#pragma omp parallel for schedule(static) num_threads(threads_.get()) reduction(max : u2)
   for (int j = 0; j < p_.ny; ++j)
     for (int i = 0; i < p_.nx; ++i)
       if (holdsFluid(index(i, j))) u2 = std::max(u2, latticeVelocity(index(i, j)).squaredNorm());
@@ -309,7 +309,7 @@ void Lattice::initialize(const std::function<void(const Vec2&, double&, Vec2&)>&
                         "}");
       setNodeState(x, rho, u * (p_.dt / p_.h));
     }
-  for (const auto& k : kinds_) k->fill(f_, threads_);
+  for (const auto& k : kinds_) k->fill(f_, threads_.get());
 }
 
 void Lattice::setNodeState(std::int64_t x, double rho, const Vec2& u) {

@@ -125,7 +125,7 @@ void Lattice::convertPopulations(const ResolvedLattice& next) {
       collide(to.collision, to.forceScheme, n, to.params, u2);
       return emit(x, n);
     };
-#pragma omp parallel for schedule(static) num_threads(threads_) reduction(min : bad)
+#pragma omp parallel for schedule(static) num_threads(threads_.get()) reduction(min : bad)
     for (int j = 0; j < p_.ny; ++j)
       for (int i = 0; i < p_.nx; ++i) {
         const std::int64_t x = index(i, j);

@@ -77,7 +77,7 @@ void Lattice::saveState(ByteWriter& out) const {
   out.put(lastMach_);
 }
 
-std::unique_ptr<Lattice> Lattice::loadState(ByteReader& in, int threads) {
+std::unique_ptr<Lattice> Lattice::loadState(ByteReader& in) {
   in.expectTag("LATT");
   const LatticeDef def = getDef(in);
   const ResolvedLattice params = resolve(def);  // the definition's own checks
@@ -90,7 +90,6 @@ std::unique_ptr<Lattice> Lattice::loadState(ByteReader& in, int threads) {
       viscosity != params.viscosity)
     ByteReader::fail("its lattice does not match its definition");
   auto lattice = std::make_unique<Lattice>(params);
-  lattice->setThreads(threads);
   const std::size_t rects = in.count(1, "obstacles");
   for (std::size_t k = 0; k < rects; ++k) {
     RectObstacle r;

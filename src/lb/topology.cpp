@@ -229,7 +229,7 @@ void Lattice::rebuildTopology() {
       if (holdsFluidKind(kind_[x]) && !previous.empty() && !holdsFluidKind(previous[x]))
         setNodeState(x, rho0, Vec2::Zero());
     }
-  for (const auto& k : kinds_) k->fill(f_, threads_);
+  for (const auto& k : kinds_) k->fill(f_, threads_.get());
 }
 
 }  // namespace sf::lb

@@ -27,11 +27,20 @@ constexpr std::string_view kCellReynoldsMarker = "cell Reynolds number";
 constexpr std::string_view kDemStepMarker = "over its accurate step";
 constexpr std::string_view kOutrunMarker = "faster than anything that drives it";
 
+// The most element substeps one step may take.
+constexpr long long kMaxSubsteps = 1000;
+
 }  // namespace
 
 // The default thread count honours OMP_NUM_THREADS (else the machine's cores).
 Manager::Manager() : threads_(std::max(1, omp_get_max_threads())) {
-  assembly_.threads = threads_;
+  attachParts();
+}
+
+void Manager::attachParts() {
+  assembly_.attachThreads(&threads_);
+  coupler_.attachThreads(&threads_);
+  if (lattice_) lattice_->attachThreads(&threads_);
 }
 
 lb::Lattice& Manager::lattice() {
@@ -54,8 +63,8 @@ void Manager::createLattice(lb::LatticeDef def) {
   if (const std::vector<std::string> problems = lattice->validate(); !problems.empty())
     throw Error("VALUE LATTICE", "these settings give the fluid a state that is not finite (" +
                                      problems.front() + "): check the viscosity, tau and forcing");
-  lattice->setThreads(threads_);
   lattice_ = std::move(lattice);
+  attachParts();
   latticeBorn_ = steps_;
   machWarned_ = false;
   checkCollision();
@@ -162,12 +171,21 @@ void Manager::setGravity(const Vec2& g) {
   gravity_ = g;
 }
 
-void Manager::checkDemTimestep(double dt) const {
+// The remedy counts the substeps that bring the element step under the
+// critical one (none past the most a step may take).
+void Manager::checkDemTimestep(double step, int substeps) const {
   const double critical = assembly_.criticalTimestep();
-  if (dt > critical)
-    throw Error("VALUE TIMESTEP",
-                "timestep " + formatNumber(dt) + " exceeds the elements' critical timestep " +
-                    formatNumber(critical) + " (2 sqrt(m/k), lightest element, stiffest material)");
+  const double dt = step / substeps;
+  if (!(dt > critical)) return;
+  long long needed = 0;
+  if (step / critical <= double(kMaxSubsteps)) {
+    needed = std::llround(std::ceil(step / critical));
+    while (step / double(needed) > critical) ++needed;  // rounding at the boundary
+  }
+  throw Error("VALUE TIMESTEP",
+              "timestep " + formatNumber(dt) + " exceeds the elements' critical timestep " +
+                  formatNumber(critical) + " (2 sqrt(m/k), lightest element, stiffest material)",
+              {Remedy::elementSubsteps, needed <= kMaxSubsteps ? needed : 0});
 }
 
 // Over the accurate step, impacts rebound off their set restitution (by
@@ -258,8 +276,9 @@ void Manager::setStepping(std::optional<double> dt, std::optional<int> substeps)
 void Manager::configureStep(const std::optional<lb::LatticeDef>& def, std::optional<double> dt,
                             std::optional<int> substeps) {
   const int n = substeps.value_or(substeps_);
-  if (n < 1 || n > 1000)
-    throw Error("VALUE SUBSTEPS", "substeps must be 1 to 1000, got " + std::to_string(n));
+  if (n < 1 || n > kMaxSubsteps)
+    throw Error("VALUE SUBSTEPS", "substeps must be 1 to " + std::to_string(kMaxSubsteps) +
+                                      ", got " + std::to_string(n));
   if (dt && (!(*dt > 0) || !std::isfinite(*dt)))
     throw Error("VALUE TIMESTEP", "a timestep must be > 0, got " + formatNumber(*dt));
   // Everything is checked before anything changes; the lattice converts its
@@ -275,10 +294,10 @@ void Manager::configureStep(const std::optional<lb::LatticeDef>& def, std::optio
     next = lb::resolve(d);
   }
   if (dt) {
-    checkDemTimestep(*dt / n);
+    checkDemTimestep(*dt, n);
   } else if (substeps && !assembly_.empty()) {
     const double step = next ? next->dt : timestep();
-    if (step > 0) checkDemTimestep(step / n);
+    if (step > 0) checkDemTimestep(step, n);
   }
   if (next) lattice_->reconfigure(*next);
   if (dt)
@@ -294,8 +313,7 @@ void Manager::setThreads(int threads) {
     throw Error("VALUE THREADS", "the thread count must be 1 to " + std::to_string(kMaxThreads) +
                                      ", got " + std::to_string(threads));
   threads_ = threads;
-  assembly_.threads = threads;
-  if (lattice_) lattice_->setThreads(threads);
+  attachParts();
 }
 
 // Covers the lattice for this step and checks what the fluid will see: a solid
@@ -303,7 +321,7 @@ void Manager::setThreads(int threads) {
 // one above the warning limit, an element spanning under two cells, and what
 // checkCoverage finds, warn.
 void Manager::coupleBeforeFluid() {
-  coupler_.prepare(*lattice_, assembly_, coupling_, gravity_, threads_);
+  coupler_.prepare(*lattice_, assembly_, coupling_, gravity_);
   const coupling::SolidSpeed& fast = coupler_.fastest();
   const std::string who = fast.element >= 0 ? "element " + std::to_string(fast.element)
                                             : "obstacle " + std::to_string(fast.obstacle);
@@ -352,7 +370,7 @@ void Manager::step() {
   if (!assembly_.empty()) {
     if (!(dt > 0))
       throw Error("VALUE TIMESTEP", "no timestep: the elements are all held", Remedy::setTimestep);
-    checkDemTimestep(demDt);
+    checkDemTimestep(dt, substeps_);
     checkDemAccuracy(demDt);
   }
   auto stamp = [&](const Error& e) {
@@ -364,6 +382,7 @@ void Manager::step() {
   // Attached afresh each step: the lattice and the elements may have been
   // replaced (a new lattice, a reset, a checkpoint) since the last.
   profile_.beginStep();
+  attachParts();
   assembly_.attachProfile(&profile_);
   coupler_.attachProfile(&profile_);
   if (lattice_) {
@@ -413,7 +432,7 @@ void Manager::reset() {
   underResolvedWarned_.clear();
   profile_.reset();
   assembly_ = dem::Assembly();
-  assembly_.threads = threads_;
+  attachParts();
   gravity_ = Vec2::Zero();
   fixedTimestep_.reset();
   time_ = 0.0;

@@ -55,7 +55,8 @@ void Manager::loadState(ByteReader& in) {
     if (remedy >= kRemedyCount) ByteReader::fail("it holds an unknown remedy");
     w.remedy = Remedy(remedy);
   }
-  if (in.getBool("lattice")) lattice_ = lb::Lattice::loadState(in, threads_);
+  if (in.getBool("lattice")) lattice_ = lb::Lattice::loadState(in);
+  attachParts();
   assembly_.loadState(in);
   // As it was, unchecked against the elements' critical step: the next step checks.
   if (substeps < 1 || substeps > 1000) ByteReader::fail("it holds a bad substep count");

@@ -9,6 +9,7 @@
 
 #include "lattice_helpers.hpp"
 #include "sandflow/core/error.hpp"
+#include "sandflow/core/parallel.hpp"
 
 namespace sf {
 namespace {
@@ -73,8 +74,8 @@ TEST(Conservation, ForcingAddsExactlyItsImpulse) {
 }
 
 // Everything at once: walls, moving wall, slip, obstacles, Zou-He, forcing.
-lb::LatticeDef busyScene() {
-  lb::LatticeDef def = test::channelDef(96, 40, 0.7);
+lb::LatticeDef busyScene(int nx = 96, int ny = 40) {
+  lb::LatticeDef def = test::channelDef(nx, ny, 0.7);
   const double cs = lb::resolve(def).soundSpeed();
   def.sides[lb::left] = lb::SideDef{lb::SideKind::velocity, Vec2(0.001, 0)};
   def.sides[lb::right] = lb::SideDef{lb::SideKind::pressure, Vec2::Zero(), cs * cs};
@@ -83,17 +84,19 @@ lb::LatticeDef busyScene() {
   return def;
 }
 
+// 512 x 64: twice the nodes from which the sweep goes parallel.
 TEST(Determinism, OneAndTwoThreadsGiveIdenticalPopulations) {
   for (lb::Collision c : {lb::Collision::bgk, lb::Collision::trt}) {
     std::vector<double> result[2];
     for (int threads : {1, 2}) {
-      lb::LatticeDef def = busyScene();
+      lb::LatticeDef def = busyScene(512, 64);
       def.collision = c;
       lb::Lattice lattice(lb::resolve(def));
       lattice.setThreads(threads);
       lattice.addObstacle({-1, Vec2(20, 15), Vec2(28, 25), false});
       lattice.addObstacle({-1, Vec2(50, 0), Vec2(60, 6), true});
-      for (int s = 0; s < 1000; ++s) lattice.step();
+      ASSERT_GE(lattice.nodes(), std::size_t(2 * parallel::kLatticeNodes));
+      for (int s = 0; s < 200; ++s) lattice.step();
       const double* f = lattice.populationData();
       result[threads - 1].assign(f, f + lattice.populationCount());
     }
@@ -217,9 +220,10 @@ TEST(Covered, CellsWithZeroRatioFollowThePlainLattice) {
 // out of order, in a pass of their own after it. Both compute each node with
 // the same operator, so the populations, each cell's exchange and the step's
 // mass (summed span by span, whatever the blocks) agree bit for bit, with one
-// thread or two, over a lattice of many blocks.
+// thread or two, over a lattice of many blocks; the nodes and the cells are
+// twice as many as the sweep and the separate pass need to go parallel.
 TEST(Covered, SweepWithTheBulkEqualsTheSeparatePass) {
-  const int n = 200;
+  const int n = 256;
   lb::LatticeDef def = periodicBox(n);
   def.forcing = Vec2(1e-6, 2e-7);
   std::mt19937 rng(9);
@@ -228,12 +232,13 @@ TEST(Covered, SweepWithTheBulkEqualsTheSeparatePass) {
   std::vector<lb::CoveredCell> sorted;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
-      if (u(rng) < 0.15) {
+      if (u(rng) < 0.6) {
         const double eps = u(rng) < 0.3 ? 1.0 : u(rng);
         const double ux = 0.02 * (u(rng) - 0.5), uy = 0.02 * (u(rng) - 0.5);
         const bool interior = eps == 1.0 && u(rng) < 0.5;
         sorted.push_back({std::int32_t(probe.nodeIndex(i, j)), interior, eps, ux, uy});
       }
+  ASSERT_GE(std::ptrdiff_t(sorted.size()), 2 * parallel::kLatticeNodes);
   std::vector<lb::CoveredCell> shuffled = sorted;
   std::shuffle(shuffled.begin(), shuffled.end(), rng);
   std::vector<std::vector<double>> finals;

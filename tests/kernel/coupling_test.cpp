@@ -202,37 +202,6 @@ TEST(Coupling, FirstCoupledStepOfANewElementFeelsNoKick) {
   }
 }
 
-// Populations and element state after a coupled run, bit for bit.
-std::vector<double> coupledState(int threads) {
-  sim::Manager m;
-  m.setThreads(threads);
-  lb::LatticeDef def = test::periodicSquare(1.0, 48, 0.02);
-  def.sides[lb::bottom] = def.sides[lb::top] = lb::SideDef{lb::SideKind::noslip};
-  def.forcing = Vec2(1e-4, 0);
-  m.createLattice(def);
-  m.setGravity(Vec2(0, -1e-3));
-  const int mat = test::softMaterial(m, 2.0);
-  for (int k = 0; k < 6; ++k)
-    test::addDisc(m, mat, Vec2(0.15 + 0.14 * k, 0.3 + 0.07 * (k % 3)), 0.05, Vec2(0, 0.001 * k));
-  m.lattice().addCircle({-1, Vec2(0.5, 0.8), 0.08, false, Vec2(0, 0), 0.05});
-  for (int k = 0; k < 200; ++k) m.step();
-  std::vector<double> out(m.lattice().populationData(),
-                          m.lattice().populationData() + m.lattice().populationCount());
-  const dem::Bodies& b = m.assembly().bodies();
-  for (int s = 0; s < b.size(); ++s) {
-    out.insert(out.end(), {b.x[s].x(), b.x[s].y(), b.v[s].x(), b.v[s].y(), b.w[s],
-                           b.fluidForce[s].x(), b.fluidForce[s].y(), b.fluidTorque[s]});
-  }
-  out.push_back(m.lattice().circles()[0].torque);
-  return out;
-}
-
-TEST(Coupling, OneAndTwoThreadsGiveIdenticalResults) {
-  const std::vector<double> a = coupledState(1), b = coupledState(2);
-  ASSERT_EQ(a.size(), b.size());
-  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
-}
-
 // 40 overlapping discs, held, in a container on a periodic 64^2 lattice; with
 // `moving`, the discs move and spin at prescribed velocities and the
 // container turns.

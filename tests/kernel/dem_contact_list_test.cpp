@@ -46,7 +46,7 @@ TEST(ContactList, VectorPassEqualsTheOneByOneLawBitForBit) {
     cluster(vec, 900, 7);
     cluster(one, 900, 7);
     one.vectorPass = false;
-    vec.threads = one.threads = threads;
+    vec.setThreads(threads), one.setThreads(threads);
     const double dt = 2e-6;
     std::size_t touching = 0;
     for (int s = 0; s < 300; ++s) {
@@ -75,7 +75,7 @@ TEST(ContactList, ThreadCountDoesNotChangeTheResult) {
   for (int threads : {1, 2}) {
     Assembly a;
     cluster(a, 900, 11);
-    a.threads = threads;
+    a.setThreads(threads);
     const double lo = -0.9e-3, hi = 29 * 1.9e-3 + 0.9e-3;  // the outer discs touch
     const Vec2 corners[4] = {{lo, lo}, {hi, lo}, {hi, hi}, {lo, hi}};
     for (int k = 0; k < 4; ++k) {

@@ -18,23 +18,19 @@
 #include "coupled_helpers.hpp"
 #include "lattice_helpers.hpp"
 #include "sandflow/core/error.hpp"
+#include "sandflow/core/parallel.hpp"
 #include "sandflow/lb/node.hpp"
 
 namespace sf {
 namespace {
 
-// Thresholds that live in .cpp files (not reachable from a header); keep in
-// step with the sources named.
-constexpr std::ptrdiff_t kParallelLinks = 4096;  // src/lb/link_nodes.cpp, LinkNode::fill
-constexpr int kCouplerElements = 16;             // src/coupling/coupler.cpp, Coupler::prepare
-constexpr int kCouplerOwners = 64;               // src/coupling/coupler.cpp, Coupler::collect
-// src/coupling/coupler.cpp: blendVelocities goes parallel from 16384 covered
-// cells, the fastest-cell scan above one chunk (Coupler::kChunk = 8192) and
-// fillCells from two quarter chunks (4096); the covered pass of the lattice
-// (src/lb/covered_node.cpp) from kParallelNodes cells.
-constexpr std::size_t kCouplerCells = 16384;
-constexpr int kParallelIntegration = 2048;      // src/dem/integrate.cpp, advanceAll (slots)
-constexpr std::size_t kParallelContacts = 512;  // src/dem/assembly.cpp, computeForces
+// Every scene runs at least twice the thresholds it exists to cross
+// (sandflow/core/parallel.hpp), so that no threshold can be raised past a
+// scene without this test failing.
+template <class Count>
+void expectTwiceAbove(Count count, std::ptrdiff_t threshold, const char* what) {
+  EXPECT_GE(std::ptrdiff_t(count), 2 * threshold) << what;
+}
 
 const std::vector<int> kThreadCounts = {1, 2, 3, 4};
 
@@ -159,11 +155,11 @@ std::size_t kindCount(const lb::Lattice& l, const char* kind) {
 
 // --- 1. The lattice alone -------------------------------------------------
 
-// A 1024 x 48 channel (49,152 nodes; its walls' 6,000-odd bounce-back links
+// A 1536 x 48 channel (73,728 nodes; its walls' 9,000-odd bounce-back links
 // are filled in parallel too), periodic in x, the top wall moving, forced,
 // with a no-slip and a free-slip obstacle, from a smooth disturbed state.
 StateHash latticeState(int threads, lb::Collision collision, int steps, bool check) {
-  lb::LatticeDef def = test::channelDef(1024, 48, 0.8);
+  lb::LatticeDef def = test::channelDef(1536, 48, 0.8);
   def.collision = collision;
   def.sides[lb::top] = lb::SideDef{lb::SideKind::noslip, Vec2(0.004, 0)};
   def.forcing = Vec2(2e-6, 1e-7);
@@ -176,8 +172,8 @@ StateHash latticeState(int threads, lb::Collision collision, int steps, bool che
     u = Vec2(0.01 + 0.005 * std::sin(0.11 * x.y() + 0.03 * x.x()), 0.004 * std::cos(0.07 * x.x()));
   });
   if (check) {
-    EXPECT_GE(kindCount(lattice, "fluid"), std::size_t(lb::kParallelNodes));
-    EXPECT_GE(kindCount(lattice, "noslip"), std::size_t(kParallelLinks));
+    expectTwiceAbove(kindCount(lattice, "fluid"), parallel::kLatticeNodes, "fluid nodes");
+    expectTwiceAbove(kindCount(lattice, "noslip"), parallel::kLinks, "bounce-back links");
     EXPECT_GE(kindCount(lattice, "periodic"), std::size_t(1));
     EXPECT_GE(kindCount(lattice, "slip"), std::size_t(1));
   }
@@ -200,8 +196,8 @@ TEST(ThreadDeterminism, LatticeAboveParallelThresholds) {
 // --- 2. Fluid and elements ----------------------------------------------------
 
 // A 256^2 lattice (65,536 nodes), periodic in x, walls below and above, forced,
-// with 169 moving, spinning discs of 6 to 8 cells' radius in ten rows (neighbours
-// in a row overlap a little: contacts) covering some 31,000 cells, a spinning
+// with 169 moving, spinning discs of 7 to 9 cells' radius in ten rows (neighbours
+// in a row overlap a little: contacts) covering some 40,000 cells, a spinning
 // circular wall among them, under gravity.
 void coupledScene(sim::Manager& m, int threads, bool implicit) {
   m.setThreads(threads);
@@ -228,7 +224,7 @@ void coupledScene(sim::Manager& m, int threads, bool implicit) {
   for (int row = 0; row < 10; ++row)
     for (int k = 0; k < 17; ++k) {
       const Vec2 x = h * Vec2((k + 0.25 + 0.5 * (row % 2)) * pitch, 20 + 24 * row);
-      const double r = h * (6 + 2 * u(rng));
+      const double r = h * (7 + 2 * u(rng));
       if (row == 4 && k == 8) {  // a circular wall in this place
         m.lattice().addCircle({-1, x, r, false, Vec2::Zero(), 0.02 * c / r});
         continue;
@@ -245,11 +241,14 @@ StateHash coupledState(int threads, bool implicit, int steps, bool check) {
     m.step();
     if (check && s == 0) {
       const int elements = m.assembly().bodies().size();
-      EXPECT_GE(m.lattice().nodes(), std::size_t(lb::kParallelNodes));
-      EXPECT_GE(elements, kCouplerElements);
-      EXPECT_GE(elements + int(m.lattice().circles().size()), kCouplerOwners);
-      EXPECT_GE(m.coupler().coveredCells(), kCouplerCells);
-      EXPECT_GE(m.coupler().coveredCells(), std::size_t(lb::kParallelNodes));
+      const std::size_t cells = m.coupler().coveredCells();
+      expectTwiceAbove(m.lattice().nodes(), parallel::kLatticeNodes, "fluid nodes");
+      expectTwiceAbove(elements, parallel::kCoverSolids, "solids covering");
+      expectTwiceAbove(elements + m.lattice().circles().size(), parallel::kLoadOwners,
+                       "solids loaded");
+      expectTwiceAbove(cells, parallel::kBlendCells, "covered cells blended");
+      expectTwiceAbove(cells, parallel::kLatticeNodes, "covered cells collided");
+      expectTwiceAbove(cells, parallel::kCellChunk, "covered cells scanned");
       EXPECT_GT(m.assembly().touchingCount(), std::size_t(0));
     }
   }
@@ -270,7 +269,7 @@ TEST(ThreadDeterminism, ImplicitlyCoupledSceneAboveParallelThresholds) {
 
 // --- 3. Elements alone --------------------------------------------------------
 
-// 2,160 discs in a box (60 x 36, staggered rows, neighbours overlapping a
+// 4,160 discs in a box (80 x 52, staggered rows, neighbours overlapping a
 // little: thousands of contacts from the first step), with small random
 // velocities, settling under gravity.
 void demBed(sim::Manager& m, int threads) {
@@ -282,7 +281,7 @@ void demBed(sim::Manager& m, int threads) {
   mat.restitution = 0.3;
   mat.friction = 0.5;
   const int sand = a.materials().add(mat);
-  const int columns = 60, rows = 36;
+  const int columns = 80, rows = 52;
   const double pitch = 1.7e-3, W = (columns + 0.6) * pitch;
   auto wall = [&](Vec2 p, Vec2 q) {
     dem::ElementDef d;
@@ -294,8 +293,8 @@ void demBed(sim::Manager& m, int threads) {
     a.add(std::move(d));
   };
   wall({0, 0}, {W, 0});
-  wall({0, 0}, {0, 0.08});
-  wall({W, 0}, {W, 0.08});
+  wall({0, 0}, {0, 0.1});
+  wall({W, 0}, {W, 0.1});
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(0, 1);
   for (int row = 0; row < rows; ++row)
@@ -316,9 +315,9 @@ StateHash demState(int threads, int steps, bool check) {
   for (int s = 0; s < steps; ++s) {
     m.step();
     if (check && s == 0) {
-      EXPECT_GE(m.assembly().bodies().size(), kParallelIntegration);
-      EXPECT_GE(m.assembly().contactList().size(), kParallelContacts);
-      EXPECT_GE(m.assembly().touchingCount(), kParallelContacts);
+      expectTwiceAbove(m.assembly().bodies().size(), parallel::kIntegrateSlots, "slots");
+      expectTwiceAbove(m.assembly().contactList().size(), parallel::kContactPairs, "pairs");
+      expectTwiceAbove(m.assembly().touchingCount(), parallel::kContactPairs, "contacts");
       // Disc-wall pairs beyond the vector pass, in more than one chunk of 64.
       EXPECT_GT(m.assembly().contactList().size() - m.assembly().contactList().vectorCount,
                 std::size_t(64));
@@ -346,6 +345,29 @@ TEST(ThreadDeterminism, ThreadCountOutsideItsRangeIsRefused) {
   }
   m.setThreads(sim::Manager::kMaxThreads);
   EXPECT_EQ(m.threads(), sim::Manager::kMaxThreads);
+}
+
+}  // namespace sf
+
+namespace sf {
+
+// One count, the Manager's: its lattice, coupler and elements read it,
+// whenever they were made, and after the Manager is moved (a checkpoint load).
+TEST(ThreadDeterminism, PartsReadTheManagersOneCount) {
+  sim::Manager m;
+  m.setThreads(3);
+  m.createLattice(test::periodicSquare(1.0, 16, 0.01));
+  EXPECT_EQ(m.lattice().threads(), 3);
+  EXPECT_EQ(m.assembly().threads(), 3);
+  m.setThreads(2);
+  EXPECT_EQ(m.lattice().threads(), 2);
+  EXPECT_EQ(m.assembly().threads(), 2);
+  sim::Manager moved = std::move(m);
+  moved.setThreads(4);
+  EXPECT_EQ(moved.lattice().threads(), 4);
+  EXPECT_EQ(moved.assembly().threads(), 4);
+  moved.reset();
+  EXPECT_EQ(moved.assembly().threads(), 4);
 }
 
 }  // namespace sf

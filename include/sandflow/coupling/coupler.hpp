@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sandflow/core/parallel.hpp"
 #include "sandflow/core/profile.hpp"
 #include "sandflow/coupling/coverage.hpp"
 #include "sandflow/dem/assembly.hpp"
@@ -54,13 +55,17 @@ class Coupler {
   // Covers the lattice for the next step. Only what moved since the last call is
   // measured again. Nothing in the scene changes until setCoveredCells at the end.
   void prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const Settings& settings,
-               const Vec2& gravity, int threads);
+               const Vec2& gravity);
   // After the lattice step: the fluid force and torque on every element (and
   // the buoyancy, for `gravity`), and the load on every circular wall.
   void collect(lb::Lattice& lattice, dem::Assembly& assembly, const Settings& settings,
                const Vec2& gravity);
   // Forgets the cached coverage (and zeroes the fluid forces) when the lattice goes.
   void clear(dem::Assembly& assembly);
+
+  // Its own thread count, or its owner's once attached (sf::ThreadCount).
+  void setThreads(int threads) { threads_.set(threads); }
+  void attachThreads(const int* count) { threads_.attach(count); }
 
   const SolidSpeed& fastest() const { return fastest_; }
   const SelfOverlap& selfOverlapping() const { return overlap_; }
@@ -169,7 +174,6 @@ class Coupler {
   std::vector<Vec3> velocity_;                            // per element: (vx, vy, w) the fluid sees
   std::vector<std::int32_t> orderScratch_, bucketStart_;  // the radix sort's buffers
   std::vector<std::uint32_t> keysScratch_;
-  static constexpr std::ptrdiff_t kChunk = 8192;  // cells a parallel task takes
   struct Fastest {
     double u2 = 0;            // |u|^2 of its first fastest cell
     std::int32_t owner = -1;  // and that cell's (first) owner
@@ -177,7 +181,7 @@ class Coupler {
   std::vector<Fastest> chunkFastest_;  // per task
   // Kept from step to step (a fresh buffer would fault in its pages).
   std::vector<lb::CoveredCell> cellsBuffer_;
-  int threads_ = 1;
+  ThreadCount threads_;
   std::uint64_t topology_ = 0;
   Settings measuredWith_;
   std::size_t cells_ = 0;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sandflow/core/byte_stream.hpp"
+#include "sandflow/core/parallel.hpp"
 #include "sandflow/core/profile.hpp"
 #include "sandflow/dem/bodies.hpp"
 #include "sandflow/dem/bond_set.hpp"
@@ -92,7 +93,10 @@ class Assembly {
   TimestepLimits timestepLimits() const;  // kept like criticalTimestep
   Integrator integrator = Integrator::central;
   double maxOverlap = 0.5;
-  int threads = 1;
+  // Its own thread count, or its owner's once attached (sf::ThreadCount).
+  void setThreads(int threads) { threads_.set(threads); }
+  void attachThreads(const int* count) { threads_.attach(count); }
+  int threads() const { return threads_.get(); }
   // false: every pair one by one, none in the vector pass (a check that both
   // give the same bits; takes effect at the next pair build).
   bool vectorPass = true;
@@ -184,6 +188,7 @@ class Assembly {
   std::vector<double> spareTorque_;
   double time_ = 0;
   double lastStep_ = 0;  // of the last step, 0 before the first (detail::changeStep)
+  ThreadCount threads_;
 };
 
 }  // namespace sf::dem

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sandflow/core/byte_stream.hpp"
+#include "sandflow/core/parallel.hpp"
 #include "sandflow/core/profile.hpp"
 #include "sandflow/lb/lattice_def.hpp"
 #include "sandflow/lb/node.hpp"
@@ -79,8 +80,10 @@ class Lattice {
   // attached, else its own.
   void attachProfile(Profile* profile) { profile_.attach(profile); }
   const Profile& profile() const { return profile_.get(); }
+  // Its own thread count, or its owner's once attached (sf::ThreadCount).
   void setThreads(int threads);
-  int threads() const { return threads_; }
+  void attachThreads(const int* count) { threads_.attach(count); }
+  int threads() const { return threads_.get(); }
 
   // Obstacles. Rects and circles share one id space.
   int addObstacle(const RectObstacle& rect);    // rect.id < 0: next free id
@@ -92,6 +95,7 @@ class Lattice {
   bool hasNoSlipSurfaces() const;
   ObstacleInfo obstacleInfo(int id) const;  // throws if unknown
   const std::vector<CircleObstacle>& circles() const { return circles_; }
+  const std::vector<RectObstacle>& rects() const { return obstacles_; }
   void setCircleLoad(std::size_t index, const Vec2& force, double torque, std::size_t cells);
   // Moves the circles by their velocity over dt (wrapping on periodic axes).
   void advanceCircles(double dt);
@@ -150,7 +154,7 @@ class Lattice {
   // covered cells of the last step. `loadState` validates what it reads and
   // throws sf::Error "FORMAT ..." (or the definition's own error).
   void saveState(ByteWriter& out) const;
-  static std::unique_ptr<Lattice> loadState(ByteReader& in, int threads);
+  static std::unique_ptr<Lattice> loadState(ByteReader& in);
   // Its invariants, checked afresh: finite populations at every node that
   // holds fluid, obstacle ids unique, covered cells on bulk-fluid nodes with
   // a solid ratio in (0, 1]. Empty when all hold.
@@ -188,7 +192,7 @@ class Lattice {
   std::vector<CircleObstacle> circles_;
   CoveredNode covered_;
   std::uint64_t topology_ = 0;
-  int threads_ = 1;
+  ThreadCount threads_;
   double lastMach_ = 0.0;
   bool canUndo_ = false;
   ProfileLink profile_;

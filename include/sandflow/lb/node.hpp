@@ -29,9 +29,6 @@ enum class NodeKind : std::uint8_t {
   open = 6,      // outside a velocity/pressure side: never read
 };
 
-// Work below this many nodes runs on one thread whatever the thread count.
-inline constexpr std::ptrdiff_t kParallelNodes = 16384;
-
 struct StepContext {
   const double* src = nullptr;
   double* dst = nullptr;

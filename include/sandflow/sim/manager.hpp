@@ -56,6 +56,7 @@ class Manager {
   void configureStep(const std::optional<lb::LatticeDef>& def, std::optional<double> dt,
                      std::optional<int> substeps);
   // The thread counts a step may use (sim configure -threads checks the same).
+  // The one count of the scene: its lattice, coupler and elements read it.
   static constexpr int kMaxThreads = 1024;
   int threads() const { return threads_; }
   void setThreads(int threads);
@@ -115,6 +116,10 @@ class Manager {
   void setMlups(double m) { mlups_ = m; }
 
  private:
+  // Points the lattice's, the coupler's and the elements' thread count at
+  // this one: when a part is made or replaced, at each step (a moved Manager's
+  // parts keep the count as their own until then) and when the count changes.
+  void attachParts();
   void warn(const std::string& message, Remedy remedy = Remedy::none);
   // Whether a warning holding `marker` was given since the last reset. The
   // warnings below are given once a run this way: the log is in the
@@ -126,7 +131,7 @@ class Manager {
   // own periodic image (after the coupler's prepare).
   void checkCoverage();
 
-  void checkDemTimestep(double dt) const;
+  void checkDemTimestep(double step, int substeps) const;
   void checkDemAccuracy(double dt);
   void checkCellReynolds();
   void checkOutrun();
