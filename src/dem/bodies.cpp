@@ -2,11 +2,15 @@
 
 #include <limits>
 
+#include "sandflow/core/assert.hpp"
+
 namespace sf::dem {
 
 int Bodies::slot(int elementId) const {
   const auto it = slotOf.find(elementId);
-  return it == slotOf.end() ? -1 : it->second;
+  if (it == slotOf.end()) return -1;
+  SF_ASSERT(it->second >= 0 && it->second < size() && id[it->second] == elementId);
+  return it->second;
 }
 
 void Bodies::push(int elementId) {

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <new>
 
+#include "sandflow/core/assert.hpp"
 #include "sandflow/core/error.hpp"
 
 namespace sf::lb {
@@ -437,11 +438,13 @@ void Lattice::swapCoveredCells(std::vector<CoveredCell>& cells, bool equilibrium
   // Not zeroed: the next step writes every cell's (the force sums read them
   // after it), and zeroing cost a pass over the array a step.
   covered_.exchange.resize(covered_.cells.size());
-  covered_.ascending =
-      inNodeOrder || std::adjacent_find(covered_.cells.begin(), covered_.cells.end(),
-                                        [](const CoveredCell& a, const CoveredCell& b) {
-                                          return a.node >= b.node;
-                                        }) == covered_.cells.end();
+  const auto descent = [&] {
+    return std::adjacent_find(
+        covered_.cells.begin(), covered_.cells.end(),
+        [](const CoveredCell& a, const CoveredCell& b) { return a.node >= b.node; });
+  };
+  SF_ASSERT(!inNodeOrder || descent() == covered_.cells.end());
+  covered_.ascending = inNodeOrder || descent() == covered_.cells.end();
   static_cast<FluidNode&>(*kinds_.front()).planSweep(covered_.cells, covered_.ascending);
 }
 

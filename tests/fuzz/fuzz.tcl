@@ -530,7 +530,11 @@ for {set i 1} {$i <= ${-count}} {incr i} {
     } else {
         incr counts(accepted)
     }
-    incr counts(steps) [expr {[dict get [sim info] step] - $stepBefore > 0 ? [dict get [sim info] step] - $stepBefore : 0}]
+    # Steps that ran: only a run or step line advances the clock by stepping
+    # (a loaded checkpoint, even one sourced, sets it to anything).
+    if {[lindex $command 0] in {run step}} {
+        incr counts(steps) [expr {max(0, [dict get [sim info] step] - $stepBefore)}]
+    }
     set problems [sim check]
     if {[llength $problems]} {
         fail $i $command "after it ([expr {$code == 1 ? "refused: $result" : "accepted"}]) sim check reports: [join $problems {; }]"

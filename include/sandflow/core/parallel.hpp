@@ -8,6 +8,8 @@
 // runs scenes at least twice each threshold to check it.
 #include <cstddef>
 
+#include "sandflow/core/assert.hpp"
+
 namespace sf::parallel {
 
 // Lattice nodes of one sweep (the bulk fluid, the covered cells' pass).
@@ -30,6 +32,7 @@ inline constexpr std::ptrdiff_t kContactPairs = 512;
 
 // The threads for `work` items: `threads` from `threshold` on, else one.
 inline int team(std::ptrdiff_t work, std::ptrdiff_t threshold, int threads) {
+  SF_ASSERT(threshold > 0 && threads >= 1);
   return work >= threshold && threads > 1 ? threads : 1;
 }
 

@@ -152,7 +152,6 @@ class Assembly {
   // The parts, to look at (tests check and break copies of them).
   const ContactSet& contactSet() const { return contacts_; }
   const BondSet& bondSet() const { return bonds_; }
-  const SourceSet& sourceSet() const { return sources_; }
 
  private:
   // The step's stages (step() lists them).

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "sandflow/core/assert.hpp"
 #include "sandflow/core/byte_stream.hpp"
 #include "sandflow/core/parallel.hpp"
 #include "sandflow/core/profile.hpp"
@@ -161,7 +162,10 @@ class Lattice {
   std::vector<std::string> validate() const;
 
  private:
-  std::int64_t index(int i, int j) const { return std::int64_t(j + 1) * rowStride_ + (i + 1); }
+  std::int64_t index(int i, int j) const {
+    SF_ASSERT(i >= -1 && i <= p_.nx && j >= -1 && j <= p_.ny);  // the padding at most
+    return std::int64_t(j + 1) * rowStride_ + (i + 1);
+  }
   void rebuildTopology();
   StepContext context() const { return contextFor(p_); }
   StepContext contextFor(const ResolvedLattice& params) const;
