@@ -1,4 +1,4 @@
-// Elements, bonds, bond breaks and contact force chains.
+// Elements, the markers of held ones, bonds, bond breaks and contact force chains.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -18,6 +18,7 @@ constexpr Rgba kForce{178, 24, 43, 220};
 constexpr Rgb kUnbonded{187, 187, 187};
 constexpr Rgb kBonded{0, 114, 178};
 constexpr Rgb kLostBond{213, 94, 0};
+constexpr Rgba kMarker{255, 255, 255, 255};
 
 std::vector<Vec2> worldOutline(const dem::Shape& shape, const Vec2& x, double angle,
                                const WorldMap& world) {
@@ -62,6 +63,28 @@ std::vector<int> bondStates(const dem::Assembly& a) {
 
 double valueOf(const dem::Bodies& b, int slot, ColorBy by) {
   return by == ColorBy::speed ? b.v[std::size_t(slot)].norm() : b.mass[std::size_t(slot)];
+}
+
+// A support's symbol at an element's centre (walls, held by default, have
+// none): a triangle when it holds its position (x, y or both), a hatched
+// base when it holds its rotation.
+void addHoldMarker(Point c, std::uint8_t hold, float scale, DrawList& list) {
+  const float u = 5 * scale;
+  float base = c.y;
+  if (hold & (dem::holdX | dem::holdY)) {
+    base = c.y - 1.6f * u;
+    std::vector<Point> triangle{{c.x, c.y}, {c.x - u, base}, {c.x + u, base}};
+    addOutline(triangle, scale, kOutline, list.worldStrokes);
+    list.fills.push_back({{c.x, c.y - u}, std::move(triangle), kMarker});
+  }
+  if (hold & dem::holdRotation) {
+    list.worldStrokes.push_back(
+        {{c.x - 1.4f * u, base}, {c.x + 1.4f * u, base}, 1.5f * scale, kOutline});
+    for (int k = -1; k <= 1; ++k) {
+      const float x = c.x + k * u;
+      list.worldStrokes.push_back({{x, base}, {x - 0.6f * u, base - 0.6f * u}, scale, kOutline});
+    }
+  }
 }
 
 }  // namespace
@@ -142,7 +165,9 @@ void addElements(const sim::Manager& m, const ViewOptions& v, const ElementColou
     addOutline(f.outline, scale, line, list.worldStrokes);
     if (shape.type() == dem::ShapeType::disc)  // so that rotation shows
       list.worldStrokes.push_back({f.centre, f.outline.front(), scale, line});
+    const Point centre = f.centre;
     if (v.fill) list.fills.push_back(std::move(f));
+    if (b.hold[k]) addHoldMarker(centre, b.hold[k], scale, list);
   }
   if (v.bonds) {
     for (const dem::Bond& bond : a.bonds()) {

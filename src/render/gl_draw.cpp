@@ -99,6 +99,15 @@ void rect(const Rect& r, const Rgba& c) {
   glEnd();
 }
 
+void fan(const Fill& f) {
+  colour(f.colour);
+  glBegin(GL_TRIANGLE_FAN);
+  glVertex2f(f.centre.x, f.centre.y);
+  for (const Point& p : f.outline) glVertex2f(p.x, p.y);
+  if (!f.outline.empty()) glVertex2f(f.outline.front().x, f.outline.front().y);
+  glEnd();
+}
+
 }  // namespace
 
 void drawList(const DrawList& list) {
@@ -125,17 +134,11 @@ void drawList(const DrawList& list) {
   rect(v, list.viewportColour);
   if (list.hasField) sprite(list.field, true);
   strokes(list.fieldStrokes);
-  for (const Fill& f : list.fills) {
-    colour(f.colour);
-    glBegin(GL_TRIANGLE_FAN);
-    glVertex2f(f.centre.x, f.centre.y);
-    for (const Point& p : f.outline) glVertex2f(p.x, p.y);
-    if (!f.outline.empty()) glVertex2f(f.outline.front().x, f.outline.front().y);
-    glEnd();
-  }
+  for (const Fill& f : list.fills) fan(f);
   strokes(list.worldStrokes);
   glDisable(GL_SCISSOR_TEST);
 
+  for (const Fill& f : list.panels) fan(f);
   strokes(list.overlayStrokes);
   for (const Sprite& s : list.overlays) sprite(s, false);
   glFinish();

@@ -97,36 +97,53 @@ struct Layout {
   WorldMap world;
   Rect viewport;
   std::vector<float> keyX;  // left edge of each key column
+  std::vector<float> keyWidth;
   float keyTop = 0, keyBottom = 0;
 };
 
-// All in scale-1 pixels; buildScene multiplies.
+// The tallest a key gets over the workbench's world (scale-1 pixels).
+constexpr float kViewKeyHeight = 320;
+
+// All in scale-1 pixels; buildScene multiplies. A picture centres the world
+// window, keeping its aspect, in the space the keys and the label leave; the
+// workbench's view (`fill`) shows the world over the whole picture, the
+// window widened about its centre to the picture's aspect, the keys and the
+// label over it.
 Layout layOut(const std::array<double, 4>& region, int width, int height, bool label,
-              const std::vector<Key>& keys, TextRenderer* text) {
+              const std::vector<Key>& keys, TextRenderer* text, bool fill) {
   Layout l;
   float keysWidth = 0;
-  std::vector<float> widths;
   for (const Key& k : keys) {
-    widths.push_back(keyWidth(k, *text));
-    keysWidth += widths.back();
+    l.keyWidth.push_back(keyWidth(k, *text));
+    keysWidth += l.keyWidth.back();
   }
   const float top = label ? kFont + 10.0f : 0.0f;
-  const float ax0 = kPad, ay0 = kPad;
-  const float ax1 = std::max(ax0 + 1, float(width) - kPad - keysWidth);
-  const float ay1 = std::max(ay0 + 1, float(height) - kPad - top);
   const double ww = region[2] - region[0], wh = region[3] - region[1];
-  const double s = std::min((ax1 - ax0) / ww, (ay1 - ay0) / wh);
-  const double pw = ww * s, ph = wh * s;
-  const double px0 = ax0 + 0.5 * ((ax1 - ax0) - pw), py0 = ay0 + 0.5 * ((ay1 - ay0) - ph);
-  l.world = {region[0], region[1], px0, py0, s};
-  l.viewport = {float(px0), float(py0), float(px0 + pw), float(py0 + ph)};
-  float x = ax1;
-  for (float w : widths) {
+  float x = 0;
+  if (fill) {
+    const double s = std::min(width / ww, height / wh);
+    l.world = {region[0], region[1], 0.5 * (width - ww * s), 0.5 * (height - wh * s), s};
+    l.viewport = {0, 0, float(width), float(height)};
+    x = std::max(0.0f, float(width) - keysWidth);
+    l.keyTop = float(height) - kPad;
+    l.keyBottom = std::max(kPad, l.keyTop - kViewKeyHeight);
+  } else {
+    const float ax0 = kPad, ay0 = kPad;
+    const float ax1 = std::max(ax0 + 1, float(width) - kPad - keysWidth);
+    const float ay1 = std::max(ay0 + 1, float(height) - kPad - top);
+    const double s = std::min((ax1 - ax0) / ww, (ay1 - ay0) / wh);
+    const double pw = ww * s, ph = wh * s;
+    const double px0 = ax0 + 0.5 * ((ax1 - ax0) - pw), py0 = ay0 + 0.5 * ((ay1 - ay0) - ph);
+    l.world = {region[0], region[1], px0, py0, s};
+    l.viewport = {float(px0), float(py0), float(px0 + pw), float(py0 + ph)};
+    x = ax1;
+    l.keyBottom = l.viewport.y0;
+    l.keyTop = l.viewport.y1;
+  }
+  for (float w : l.keyWidth) {
     l.keyX.push_back(x);
     x += w;
   }
-  l.keyBottom = l.viewport.y0;
-  l.keyTop = l.viewport.y1;
   return l;
 }
 
@@ -289,14 +306,18 @@ void checkView(const sim::Manager& m, const ViewOptions& v) {
   }
 }
 
-DrawList buildScene(const sim::Manager& m, const ViewOptions& v, int scale) {
-  checkView(m, v);
+namespace {
+
+constexpr Rgba kPanel{255, 255, 255, 200};
+
+// The picture (`fill` false) or the workbench's frame (true; see layOut).
+DrawList build(const sim::Manager& m, const ViewOptions& v, int scale, bool fill) {
   TextRenderer& text = sharedTextRenderer();
   const Field field = shownField(v, m.hasLattice());
   std::vector<float> eps;
   if (m.hasLattice()) eps = detail::solidRatios(m.lattice());
   const Keys keys = keysFor(m, v, &eps);
-  const Layout l = layOut(shownRegion(m, v), v.width, v.height, v.label, keys.keys, &text);
+  const Layout l = layOut(shownRegion(m, v), v.width, v.height, v.label, keys.keys, &text, fill);
   const float f = float(scale);
 
   DrawList list;
@@ -308,34 +329,66 @@ DrawList buildScene(const sim::Manager& m, const ViewOptions& v, int scale) {
   world.py0 *= f;
   world.pixelsPerUnit *= f;
   list.world = {world.wx0, world.wy0, world.px0, world.py0, world.pixelsPerUnit};
+  // The world window the viewport shows: the region, widened in the view.
+  const auto r = shownRegion(m, v);
+  const double s = world.pixelsPerUnit;
+  const detail::Window shown = fill ? detail::Window{world.wx0 + (list.viewport.x0 - world.px0) / s,
+                                                     world.wy0 + (list.viewport.y0 - world.py0) / s,
+                                                     world.wx0 + (list.viewport.x1 - world.px0) / s,
+                                                     world.wy0 + (list.viewport.y1 - world.py0) / s}
+                                    : detail::Window{r[0], r[1], r[2], r[3]};
 
   if (m.hasLattice() && field != Field::none) {
     list.hasField = true;
     list.field =
         detail::fieldSprite(m.lattice(), eps, field, keys.field ? &*keys.field : nullptr, world);
   }
+  detail::addGuideLines(v, world, list.viewport, f, list.fieldStrokes);
   if (m.hasLattice()) {
     // Arrows and streamlines in white over the dark end of viridis, else black.
     const bool dark = field == Field::velocity || field == Field::density;
     const Rgba ink = dark ? Rgba{255, 255, 255, 230} : Rgba{0, 0, 0, 230};
-    const auto r = shownRegion(m, v);
-    const detail::Window shown{r[0], r[1], r[2], r[3]};
     if (v.streamlines)
       detail::addStreamlines(m.lattice(), eps, world, shown, kArrowSpacing * f, f, ink,
                              list.fieldStrokes);
     if (v.vectors)
       detail::addArrows(m.lattice(), eps, world, shown, kArrowSpacing * f, f, ink,
                         list.fieldStrokes);
+    // Outlines only where the picture is about the cells under them.
+    const bool cells = field == Field::nodes || field == Field::solid;
+    detail::addObstacles(m.lattice(), v.fill && !cells, world, f, list);
   }
   detail::addElements(m, v, keys.colouring, world, f, list);
 
-  addFrame(list.viewport, f, kFrame, list.overlayStrokes);
-  if (v.label)
-    list.overlays.push_back(text.render(timeLabel(m), kFont * scale, kText, kPad * f,
-                                        float(list.height) - (kFont + 4) * f));
-  for (std::size_t k = 0; k < keys.keys.size(); ++k)
+  if (!fill) addFrame(list.viewport, f, kFrame, list.overlayStrokes);
+  if (v.label) {
+    Sprite time = text.render(timeLabel(m), kFont * scale, kText, kPad * f,
+                              float(list.height) - (kFont + 4) * f);
+    if (fill)
+      list.panels.push_back(detail::panel(
+          {time.x0 - 4 * f, time.y0 - 2 * f, time.x1 + 4 * f, time.y1 + 2 * f}, kPanel));
+    list.overlays.push_back(std::move(time));
+  }
+  for (std::size_t k = 0; k < keys.keys.size(); ++k) {
+    if (fill)
+      list.panels.push_back(detail::panel(
+          {l.keyX[k] * f, l.keyBottom * f, (l.keyX[k] + l.keyWidth[k]) * f, l.keyTop * f}, kPanel));
     addKey(keys.keys[k], l.keyX[k], l.keyBottom, l.keyTop, scale, text, list);
+  }
+  detail::addGuideLabels(v, world, list.viewport, f, text, list);
   return list;
+}
+
+}  // namespace
+
+DrawList buildScene(const sim::Manager& m, const ViewOptions& v, int scale) {
+  checkView(m, v);
+  return build(m, v, scale, false);
+}
+
+DrawList buildView(const sim::Manager& m, const ViewOptions& v, int scale) {
+  checkOptions(v);
+  return build(m, v, scale, true);
 }
 
 std::array<double, 2> worldToImage(const sim::Manager& m, const ViewOptions& v, double x,
@@ -343,8 +396,8 @@ std::array<double, 2> worldToImage(const sim::Manager& m, const ViewOptions& v, 
   std::vector<float> eps;
   if (m.hasLattice()) eps = detail::solidRatios(m.lattice());
   const Keys keys = keysFor(m, v, &eps);
-  const Layout l =
-      layOut(shownRegion(m, v), v.width, v.height, v.label, keys.keys, &sharedTextRenderer());
+  const Layout l = layOut(shownRegion(m, v), v.width, v.height, v.label, keys.keys,
+                          &sharedTextRenderer(), false);
   const WorldMap& w = l.world;
   return {w.px0 + (x - w.wx0) * w.pixelsPerUnit,
           double(v.height) - (w.py0 + (y - w.wy0) * w.pixelsPerUnit)};

@@ -8,6 +8,10 @@
 #include "sandflow/geometry/vec2.hpp"
 #include "sandflow/render/scene_builder.hpp"
 
+namespace sf::render {
+class TextRenderer;
+}
+
 namespace sf::render::detail {
 
 // World coordinates to buffer pixels: a uniform scale (the world window keeps
@@ -84,5 +88,21 @@ void addElements(const sim::Manager& m, const ViewOptions& v, const ElementColou
 // A stroke's square-ended outline around a closed polygon.
 void addOutline(const std::vector<Point>& outline, float width, Rgba colour,
                 std::vector<Stroke>& out);
+
+// The lattice's rectangles and circles, filled (unless `filled` is false) and
+// outlined as elements are.
+void addObstacles(const lb::Lattice& lattice, bool filled, const WorldMap& world, float scale,
+                  DrawList& list);
+
+// -grid and -axes: lines across `viewport` (buffer pixels), under the elements.
+void addGuideLines(const ViewOptions& v, const WorldMap& world, const Rect& viewport, float scale,
+                   std::vector<Stroke>& out);
+// -axes' coordinates along the bottom and left edges, and -scalebar, each on a
+// translucent panel; a label that would cover a panel already in the list
+// (the time, a colour key) is left out.
+void addGuideLabels(const ViewOptions& v, const WorldMap& world, const Rect& viewport, float scale,
+                    TextRenderer& text, DrawList& list);
+// A rectangle as a fill (the back of a label or key).
+Fill panel(const Rect& r, Rgba colour);
 
 }  // namespace sf::render::detail

@@ -110,7 +110,7 @@ bool frameList(Tcl_Interp* interp, Session& s, const render::ViewOptions& v, boo
       reuse && s.viewList && s.viewList->width == v.width && s.viewList->height == v.height;
   if (!same) {
     const int code = guarded(interp, [&] {
-      s.viewList = std::make_unique<render::DrawList>(render::buildScene(s.manager, v, 1));
+      s.viewList = std::make_unique<render::DrawList>(render::buildView(s.manager, v, 1));
       return TCL_OK;
     });
     if (code != TCL_OK) return false;
@@ -153,7 +153,7 @@ int Picture(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
   if (!frameOptions(interp, s, objv, v)) return TCL_ERROR;
   render::DrawList list;
   int code = guarded(interp, [&] {
-    list = render::buildScene(s.manager, v, 2);  // supersampled, as snapshots are
+    list = render::buildView(s.manager, v, 2);  // supersampled, as snapshots are
     return TCL_OK;
   });
   if (code != TCL_OK) return code;

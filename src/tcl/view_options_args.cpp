@@ -1,5 +1,6 @@
 // The view options as Tcl options: -field -vectors -streamlines -range
-// -colorby -materialcolors -bonds -forces -label -size -region (-offscreen).
+// -colorby -materialcolors -fill -bonds -forces -label -grid -axes -scalebar
+// -size -region (-offscreen).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -151,6 +152,10 @@ const OptionTable<ViewStage> kOptions{
     flag("-forces", "contact force chains, width proportional to force",
          &render::ViewOptions::forces),
     flag("-label", "time and step in the top corner", &render::ViewOptions::label),
+    flag("-grid", "grid lines at a round spacing", &render::ViewOptions::grid),
+    flag("-axes", "the axes x = 0 and y = 0, coordinates along the edges",
+         &render::ViewOptions::axes),
+    flag("-scalebar", "a bar of a round length, bottom right", &render::ViewOptions::scalebar),
     Row{{"-size", "{W H}", "picture size in pixels", ValueKind::custom},
         nullptr,
         nullptr,
@@ -186,7 +191,7 @@ const OptionTable<ViewStage> kOptions{
         },
         [](const ViewStage& s) { return newString(s.offscreen); }},
 };
-constexpr int kOffscreen = 12;
+constexpr int kOffscreen = 15;
 
 const ViewStage& defaults() {
   static const ViewStage d{render::ViewOptions{}, "auto", true};

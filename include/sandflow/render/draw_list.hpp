@@ -62,7 +62,8 @@ struct DrawList {
   std::vector<Stroke> fieldStrokes;    // arrows, streamlines: under the elements (clipped)
   std::vector<Fill> fills;             // elements, in drawing order (clipped)
   std::vector<Stroke> worldStrokes;    // outlines, bonds, forces: over them (clipped)
-  std::vector<Stroke> overlayStrokes;  // frames and ticks outside the viewport
+  std::vector<Fill> panels;            // translucent backs of keys and labels over the world
+  std::vector<Stroke> overlayStrokes;  // frames and ticks, over the panels
   std::vector<Sprite> overlays;        // text and colour bars (blended)
 };
 

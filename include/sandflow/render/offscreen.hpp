@@ -24,7 +24,7 @@ struct OffscreenApi {
   void (*drawCurrent)(const DrawList& list);
 };
 
-inline constexpr int kOffscreenApiVersion = 2;
+inline constexpr int kOffscreenApiVersion = 3;  // 3: DrawList::panels
 
 // An OpenGL buffer (rows bottom-up) as an image (rows top-down).
 inline void imageFromBuffer(const std::vector<std::uint8_t>& buffer, int width, int height,

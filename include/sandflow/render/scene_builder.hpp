@@ -37,6 +37,12 @@ void checkView(const sim::Manager& m, const ViewOptions& v);
 // The picture. Every pixel size is multiplied by `scale` (for supersampling):
 // the list is for a (scale * width) x (scale * height) buffer.
 DrawList buildScene(const sim::Manager& m, const ViewOptions& v, int scale = 1);
+// The workbench's frame of the same scene: the world fills the whole picture
+// (the region widened about its centre to the picture's aspect), with the time
+// and the colour keys over it on translucent panels. An editor's view may show
+// empty space or a field the scene cannot have yet: only checkOptions applies
+// (a field that needs a lattice shows nothing until there is one).
+DrawList buildView(const sim::Manager& m, const ViewOptions& v, int scale = 1);
 
 // Where a world point lands in a scale-1 picture of the view (pixel centre
 // coordinates, origin top-left as in the PNG): for tests and picking.

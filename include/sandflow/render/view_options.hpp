@@ -30,10 +30,13 @@ struct ViewOptions {
   std::optional<std::array<double, 2>> range;
   ColorBy colorBy = ColorBy::none;  // none: each material its own colour
   std::map<std::string, Rgb> materialColors;
-  bool fill = true;     // elements filled (else outlines only: the cells show through)
-  bool bonds = true;    // intact bonds as lines, breaks marked
-  bool forces = false;  // contact force chains, width proportional to force
-  bool label = true;    // time and step in the top corner
+  bool fill = true;       // elements filled (else outlines only: the cells show through)
+  bool bonds = true;      // intact bonds as lines, breaks marked
+  bool forces = false;    // contact force chains, width proportional to force
+  bool label = true;      // time and step in the top corner
+  bool grid = false;      // lines at a round spacing across the world window
+  bool axes = false;      // the lines x = 0 and y = 0, coordinates along the edges
+  bool scalebar = false;  // a bar of a round length in the bottom-right corner
   int width = 800, height = 600;
   // nullopt: the lattice, or the elements' bounding box without a lattice.
   std::optional<std::array<double, 4>> region;  // x0 y0 x1 y1
