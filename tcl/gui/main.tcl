@@ -124,6 +124,7 @@ proc ::sf::gui::menus {} {
     $m.view add checkbutton -label "Contact forces" -variable ::sf::gui::viewForces \
         -command {::sf::gui::viewSet -forces $::sf::gui::viewForces}
     $m.view add command -label "Colour range\u2026" -command ::sf::gui::askRange
+    view::menuEntries $m.view
     $m.view add separator
     $m.view add command -label "Zoom to fit" -accelerator F -command ::sf::gui::view::fit
     $m.view add command -label "Zoom in" -accelerator + -command {::sf::gui::zoomCentre 1.25}

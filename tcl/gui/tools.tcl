@@ -76,8 +76,17 @@ proc ::sf::gui::tools::choose {name} {
     variable drag {}
     setOverlay {}
     foreach {n label key help} $::sf::gui::tools::palette {
-        if {$n eq $name} { ::sf::gui::status "$label: $help" }
+        if {$n ne $name} continue
+        if {$name in {rect circle} && [catch {lattice cget -cells}]} {
+            ::sf::gui::status "$label: [noLattice]" error
+        } else {
+            ::sf::gui::status "$label: $help"
+        }
     }
+}
+
+proc ::sf::gui::tools::noLattice {} {
+    return "obstacles are part of the lattice, and there is none: draw one first (the Lattice tool, key l)"
 }
 
 # Mouse and key bindings on the view widget.
@@ -143,6 +152,7 @@ proc ::sf::gui::tools::press {px py state} {
     variable drag
     variable vertices
     focus [set ::sf::gui::view::w]
+    ::sf::gui::view::hold
     set p [point $px $py]
     switch $tool {
         pan { panStart $px $py; return }
@@ -234,6 +244,7 @@ proc ::sf::gui::tools::release {px py state} {
             }
         }
         shape {
+            # A refused command has said why (::sf::gui::do), and so has make.
             if {$moved} { catch {make $tool $x0 $y0 $x1 $y1} }
         }
     }
@@ -277,15 +288,63 @@ proc ::sf::gui::tools::shapeOverlay {tool x0 y0 x1 y1} {
             set cy [expr {0.5 * ($y0 + $y1)}]
             set a [expr {0.5 * abs($x1 - $x0)}]
             set b [expr {0.5 * abs($y1 - $y0)}]
+            # |x/a|^m + |y/b|^n = 1 as the kernel samples it; an ellipse is m = n = 2.
+            lassign {2.0 2.0} m n
+            if {$tool eq "superquadric"} { lassign [previewExponents] m n }
             set pts {}
-            for {set k 0} {$k < 48} {incr k} {
-                set t [expr {6.283185307179586 * $k / 48}]
-                lappend pts [expr {$cx + $a * cos($t)}] [expr {$cy + $b * sin($t)}]
+            for {set k 0} {$k < 96} {incr k} {
+                set t [expr {6.283185307179586 * $k / 96}]
+                set c [expr {cos($t)}]
+                set s [expr {sin($t)}]
+                lappend pts [expr {$cx + $a * ($c < 0 ? -1 : 1) * abs($c) ** (2.0 / $m)}] \
+                    [expr {$cy + $b * ($s < 0 ? -1 : 1) * abs($s) ** (2.0 / $n)}]
             }
             return [list [list closed $preview {*}$pts] [list box #adb5bd $x0 $y0 $x1 $y1]]
         }
+        lattice {
+            # The lattice the drag makes, its height in whole cells, over the drag.
+            if {[catch {latticeBox $x0 $y0 $x1 $y1} box]} {
+                return [list [list box #adb5bd $x0 $y0 $x1 $y1]]
+            }
+            lassign $box lo lx ly
+            lassign $lo ox oy
+            return [list [list box #adb5bd $x0 $y0 $x1 $y1] \
+                        [list box $preview $ox $oy [expr {$ox + $lx}] [expr {$oy + $ly}]]]
+        }
         default { return [list [list box $preview $x0 $y0 $x1 $y1]] }
     }
+}
+
+# The superquadric's exponents {m n} for the preview: those typed when they
+# are two numbers of 1 to 100 (what `superquadric create` takes), else an
+# ellipse's (the command will say what is wrong with them).
+proc ::sf::gui::tools::previewExponents {} {
+    variable exponents
+    if {[string is list $exponents] && [llength $exponents] == 2 &&
+        [string is double -strict [lindex $exponents 0]] &&
+        [string is double -strict [lindex $exponents 1]] &&
+        [tcl::mathfunc::min {*}$exponents] >= 1 && [tcl::mathfunc::max {*}$exponents] <= 100} {
+        return $exponents
+    }
+    return {2.0 2.0}
+}
+
+# The lattice a box dragged from (x0, y0) to (x1, y1) makes: {origin width
+# height} with `cells` across and the height rounded to whole cells (at least
+# one), written so that `lattice create` finds it a whole number of spacings.
+proc ::sf::gui::tools::latticeBox {x0 y0 x1 y1} {
+    variable cells
+    if {![string is integer -strict $cells] || $cells < 1} {
+        return -code error "Cells must be a whole number of 1 or more, got \"$cells\""
+    }
+    set lx [tidy [expr {abs($x1 - $x0)}]]
+    if {$lx <= 0 || $y1 == $y0} {
+        return -code error "a lattice needs a box: drag across and up or down"
+    }
+    set h [expr {$lx / $cells}]
+    set ny [expr {max(1, round(abs($y1 - $y0) / $h))}]
+    list [list [expr {min($x0, $x1)}] [expr {min($y0, $y1)}]] $lx \
+        [expr {double([format %.12g [expr {$ny * $h}]])}]
 }
 
 # The circle that fills a box's shorter side, centred in it.
@@ -314,23 +373,31 @@ proc ::sf::gui::tools::make {tool x0 y0 x1 y1} {
     lassign $lo bx0 by0
     lassign $hi bx1 by1
     set mat [expr {$material eq "" || $material eq "default" ? {} : [list -material $material]}]
+    if {$tool in {rect circle} && [catch {lattice cget -cells}]} {
+        ::sf::gui::showError [noLattice]
+        return -code error [noLattice]
+    }
     switch $tool {
         lattice {
-            set lx [tidy [expr {$bx1 - $bx0}]]
-            set h [expr {$lx / $cells}]
-            # The height as a whole number of spacings.
-            set ny [expr {max(1, round(($by1 - $by0) / $h))}]
-            set ly [tidy [expr {$ny * $h}]]
+            if {![catch {lattice cget -cells}]} {
+                set message "there is a lattice already: delete it first (lattice delete)"
+            } elseif {[catch {latticeBox $x0 $y0 $x1 $y1} box]} {
+                set message $box
+            }
+            if {[info exists message]} {
+                ::sf::gui::showError "Lattice: $message"
+                return -code error $message
+            }
+            lassign $box lo lx ly
             set cmd [list lattice create -origin $lo -size [list $lx $ly] -cells $cells \
                          -viscosity $viscosity]
-            if {[llength $forcing] == 2 && ([lindex $forcing 0] != 0 || [lindex $forcing 1] != 0)} {
-                lappend cmd -forcing $forcing
-            }
-            if {![catch {lattice info}]} {
-                return -code error "there is a lattice already: delete it first (lattice delete)"
-            }
+            # No -forcing for none (blank, or two zeros); anything else for the command to judge.
+            set zero [expr {[string is list $forcing] && [llength $forcing] == 2
+                            && [string is double -strict [lindex $forcing 0]]
+                            && [string is double -strict [lindex $forcing 1]]
+                            && [lindex $forcing 0] == 0 && [lindex $forcing 1] == 0}]
+            if {!$zero && [string trim $forcing] ne ""} { lappend cmd -forcing $forcing }
             ::sf::gui::do $cmd {lattice delete} "lattice"
-            ::sf::gui::view::fit
         }
         rect {
             set id [nextObstacle]
