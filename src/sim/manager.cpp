@@ -33,14 +33,14 @@ constexpr long long kMaxSubsteps = 1000;
 }  // namespace
 
 // The default thread count honours OMP_NUM_THREADS (else the machine's cores).
-Manager::Manager() : threads_(std::max(1, omp_get_max_threads())) {
+Manager::Manager() : threads_(std::make_unique<int>(std::max(1, omp_get_max_threads()))) {
   attachParts();
 }
 
 void Manager::attachParts() {
-  assembly_.attachThreads(&threads_);
-  coupler_.attachThreads(&threads_);
-  if (lattice_) lattice_->attachThreads(&threads_);
+  assembly_.attachThreads(threads_.get());
+  coupler_.attachThreads(threads_.get());
+  if (lattice_) lattice_->attachThreads(threads_.get());
 }
 
 lb::Lattice& Manager::lattice() {
@@ -312,8 +312,7 @@ void Manager::setThreads(int threads) {
   if (threads < 1 || threads > kMaxThreads)
     throw Error("VALUE THREADS", "the thread count must be 1 to " + std::to_string(kMaxThreads) +
                                      ", got " + std::to_string(threads));
-  threads_ = threads;
-  attachParts();
+  *threads_ = threads;
 }
 
 // Covers the lattice for this step and checks what the fluid will see: a solid

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -362,7 +363,13 @@ TEST(ThreadDeterminism, PartsReadTheManagersOneCount) {
   m.setThreads(2);
   EXPECT_EQ(m.lattice().threads(), 2);
   EXPECT_EQ(m.assembly().threads(), 2);
-  sim::Manager moved = std::move(m);
+  // Moved out of a Manager that then goes (checkpoint load does this): the
+  // lattice, which moves with it, still reads the count.
+  auto source = std::make_unique<sim::Manager>(std::move(m));
+  sim::Manager moved = std::move(*source);
+  source.reset();
+  EXPECT_EQ(moved.lattice().threads(), 2);
+  EXPECT_EQ(moved.assembly().threads(), 2);
   moved.setThreads(4);
   EXPECT_EQ(moved.lattice().threads(), 4);
   EXPECT_EQ(moved.assembly().threads(), 4);

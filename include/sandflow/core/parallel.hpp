@@ -42,8 +42,8 @@ namespace sf {
 
 // The thread count a part of a scene (lattice, coupler, elements) runs on.
 // A scene's Manager owns the one count and attaches it to its parts; a part
-// on its own (tests, benchmarks) keeps one of its own. A copy keeps the
-// count it had, as its own.
+// on its own (tests, benchmarks) keeps one of its own. A copy (or a moved
+// part) keeps the count it had, as its own.
 class ThreadCount {
  public:
   ThreadCount() = default;

@@ -58,7 +58,7 @@ class Manager {
   // The thread counts a step may use (sim configure -threads checks the same).
   // The one count of the scene: its lattice, coupler and elements read it.
   static constexpr int kMaxThreads = 1024;
-  int threads() const { return threads_; }
+  int threads() const { return *threads_; }
   void setThreads(int threads);
 
   // Fluid-solid coupling (physics.md §2, §3, §5), used whenever the lattice has
@@ -117,8 +117,8 @@ class Manager {
 
  private:
   // Points the lattice's, the coupler's and the elements' thread count at
-  // this one: when a part is made or replaced, at each step (a moved Manager's
-  // parts keep the count as their own until then) and when the count changes.
+  // this one: when a part is made or replaced, and at each step (the coupler
+  // and the elements of a moved Manager keep the count as their own until then).
   void attachParts();
   void warn(const std::string& message, Remedy remedy = Remedy::none);
   // Whether a warning holding `marker` was given since the last reset. The
@@ -142,7 +142,9 @@ class Manager {
   dem::Assembly assembly_;
   Vec2 gravity_ = Vec2::Zero();
   std::optional<double> fixedTimestep_;
-  int threads_ = 1;
+  // On the heap, so that a moved Manager's parts (its lattice moves with it)
+  // still read it; its parts hold its address (attachParts).
+  std::unique_ptr<int> threads_;
   double time_ = 0.0;
   long long steps_ = 0;
   long long latticeBorn_ = -1000000000;  // steps_ when the lattice was made (checkOutrun)
