@@ -106,11 +106,12 @@ constexpr float kViewKeyHeight = 320;
 
 // All in scale-1 pixels; buildScene multiplies. A picture centres the world
 // window, keeping its aspect, in the space the keys and the label leave; the
-// workbench's view (`fill`) shows the world over the whole picture, the
-// window widened about its centre to the picture's aspect, the keys and the
-// label over it.
+// workbench's view (`fill`) shows the world over the whole picture, the keys
+// and the label over it: a window it was given widened about its centre to
+// the picture's aspect, the automatic one (`fitted`: the scene) centred in
+// the space they leave, as in a picture, so that they cover none of it.
 Layout layOut(const std::array<double, 4>& region, int width, int height, bool label,
-              const std::vector<Key>& keys, TextRenderer* text, bool fill) {
+              const std::vector<Key>& keys, TextRenderer* text, bool fill, bool fitted = false) {
   Layout l;
   float keysWidth = 0;
   for (const Key& k : keys) {
@@ -121,8 +122,13 @@ Layout layOut(const std::array<double, 4>& region, int width, int height, bool l
   const double ww = region[2] - region[0], wh = region[3] - region[1];
   float x = 0;
   if (fill) {
-    const double s = std::min(width / ww, height / wh);
-    l.world = {region[0], region[1], 0.5 * (width - ww * s), 0.5 * (height - wh * s), s};
+    // The space for the world: all of the picture, or what the keys and the label leave.
+    const float ax0 = fitted ? kPad : 0, ay0 = fitted ? kPad : 0;
+    const float ax1 = fitted ? std::max(ax0 + 1, float(width) - kPad - keysWidth) : float(width);
+    const float ay1 = fitted ? std::max(ay0 + 1, float(height) - kPad - top) : float(height);
+    const double s = std::min((ax1 - ax0) / ww, (ay1 - ay0) / wh);
+    l.world = {region[0], region[1], ax0 + 0.5 * ((ax1 - ax0) - ww * s),
+               ay0 + 0.5 * ((ay1 - ay0) - wh * s), s};
     l.viewport = {0, 0, float(width), float(height)};
     x = std::max(0.0f, float(width) - keysWidth);
     l.keyTop = float(height) - kPad;
@@ -317,7 +323,8 @@ DrawList build(const sim::Manager& m, const ViewOptions& v, int scale, bool fill
   std::vector<float> eps;
   if (m.hasLattice()) eps = detail::solidRatios(m.lattice());
   const Keys keys = keysFor(m, v, &eps);
-  const Layout l = layOut(shownRegion(m, v), v.width, v.height, v.label, keys.keys, &text, fill);
+  const Layout l = layOut(shownRegion(m, v), v.width, v.height, v.label, keys.keys, &text, fill,
+                          !v.region.has_value());
   const float f = float(scale);
 
   DrawList list;

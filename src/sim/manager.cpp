@@ -313,6 +313,7 @@ void Manager::setThreads(int threads) {
     throw Error("VALUE THREADS", "the thread count must be 1 to " + std::to_string(kMaxThreads) +
                                      ", got " + std::to_string(threads));
   *threads_ = threads;
+  attachParts();
 }
 
 // Covers the lattice for this step and checks what the fluid will see: a solid

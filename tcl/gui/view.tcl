@@ -3,7 +3,8 @@
 # had (plain X forwarding), the same picture drawn off-screen into a Tk photo.
 # It owns the world window (pan, zoom, zoom to fit) and the mapping between
 # pixels and world coordinates that the drawing tools use. The world fills the
-# whole widget (::sf::gui::draw widens the window to the widget's shape).
+# whole widget (::sf::gui::draw widens the window to the widget's shape; the
+# scene, when fitted, goes where the time and the colour keys leave room).
 #
 # The window moves only when the user moves it: the wheel, pan, `f`, a typed
 # `view configure -region`. Fitted (`f`, New, at start), it follows the scene
@@ -148,8 +149,8 @@ proc ::sf::gui::view::draw {{reuse 0}} {
     set geometry $result
     incr frames
     # Following the scene: the first frame that shows something is where the
-    # view stays.
-    if {$region eq {} && $typed eq {} && [sceneShown]} { set region [::sf::gui::region] }
+    # view stays (all of the widget's window: the same picture from then on).
+    if {$region eq {} && $typed eq {} && [sceneShown]} { set region [shown] }
     syncMenu
 }
 
@@ -173,7 +174,7 @@ proc ::sf::gui::view::adoptTyped {} {
 proc ::sf::gui::view::hold {} {
     variable region
     variable typed
-    if {$region eq {} && $typed eq {}} { set region [::sf::gui::region] }
+    if {$region eq {} && $typed eq {}} { set region [shown] }
 }
 
 # Pixel (Tk, origin top-left) -> world {x y}, and back.

@@ -38,8 +38,9 @@ void checkView(const sim::Manager& m, const ViewOptions& v);
 // the list is for a (scale * width) x (scale * height) buffer.
 DrawList buildScene(const sim::Manager& m, const ViewOptions& v, int scale = 1);
 // The workbench's frame of the same scene: the world fills the whole picture
-// (the region widened about its centre to the picture's aspect), with the time
-// and the colour keys over it on translucent panels. An editor's view may show
+// (a -region widened about its centre to the picture's aspect; the automatic
+// one fitted in the room the keys and the time leave), with the time and the
+// colour keys over it on translucent panels. An editor's view may show
 // empty space or a field the scene cannot have yet: only checkOptions applies
 // (a field that needs a lattice shows nothing until there is one).
 DrawList buildView(const sim::Manager& m, const ViewOptions& v, int scale = 1);

@@ -117,8 +117,9 @@ class Manager {
 
  private:
   // Points the lattice's, the coupler's and the elements' thread count at
-  // this one: when a part is made or replaced, and at each step (the coupler
-  // and the elements of a moved Manager keep the count as their own until then).
+  // this one: when a part is made or replaced, when the count changes and at
+  // each step (a moved Manager's coupler and elements keep the count as their
+  // own until then).
   void attachParts();
   void warn(const std::string& message, Remedy remedy = Remedy::none);
   // Whether a warning holding `marker` was given since the last reset. The
