@@ -71,20 +71,41 @@ SF_ALWAYS_INLINE Vec2 coverCell(const CoveredCell& cell, bool equilibriumInterio
   return b * given;
 }
 
+// Where a pass reads a cell's inputs and puts its outputs: inputs from src in
+// the step's layout (in[i] + node), outputs to dst in the other (out[i] +
+// node), or with a buffer to buffer[i * pitch + k - first].
+struct Ends {
+  const double* src;
+  double* dst;
+  std::ptrdiff_t in[Q], out[Q];
+  double* buffer;
+  std::ptrdiff_t first, pitch;
+  Ends(const StepContext& ctx, double* buf, std::ptrdiff_t first, std::ptrdiff_t last)
+      : src(ctx.src), dst(ctx.dst), buffer(buf), first(first), pitch((last - first + 7) / 8 * 8) {
+    const Slots slots = ctx.slots();
+    for (int i = 0; i < Q; ++i) {
+      in[i] = slots.input(ctx.from, i, 0);
+      out[i] = slots.post(flipped(ctx.from), i, 0);
+    }
+  }
+  double& output(int i, std::ptrdiff_t k, std::ptrdiff_t node) const {
+    return buffer ? buffer[i * pitch + k - first] : dst[out[i] + node];
+  }
+};
+
 template <Collision C, ForceScheme S>
 SF_KERNEL_CLONES StepStats runBlock(const StepContext& ctx, const CoveredNode& node,
-                                    std::ptrdiff_t first, std::ptrdiff_t last) {
-  using namespace d2q9;
+                                    std::ptrdiff_t first, std::ptrdiff_t last, double* buffer) {
   const PassConstants pass(ctx.params);
+  const Ends ends(ctx, buffer, first, last);
   StepStats stats;
   for (std::ptrdiff_t k = first; k < last; ++k) {
     const CoveredCell& cell = node.cells[k];
     double f[Q], out[Q], rho, u2;
-    for (int i = 0; i < Q; ++i)
-      f[i] = ctx.src[i * ctx.stride + cell.node - (ex[i] + ey[i] * ctx.rowStride)];
+    for (int i = 0; i < Q; ++i) f[i] = ends.src[ends.in[i] + cell.node];
     node.exchange[k] =
         coverCell<C, S>(cell, node.equilibriumInterior, ctx.params, pass, f, out, rho, u2);
-    for (int i = 0; i < Q; ++i) ctx.dst[i * ctx.stride + cell.node] = out[i];
+    for (int i = 0; i < Q; ++i) ends.output(i, k, cell.node) = out[i];
     stats.merge({rho, u2});
   }
   return stats;
@@ -129,14 +150,14 @@ SF_ALWAYS_INLINE void laneEquilibria(const Lanes& rho, const Lanes& ux, const La
 }
 
 SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const CoveredNode& node,
-                                            std::ptrdiff_t first, std::ptrdiff_t last) {
+                                            std::ptrdiff_t first, std::ptrdiff_t last,
+                                            double* buffer) {
   using namespace d2q9;
   const CollisionParams& p = ctx.params;
   const PassConstants pass(p);
   const double tau = pass.tau;
   const double* source = pass.source;
-  std::ptrdiff_t pull[Q];
-  for (int i = 0; i < Q; ++i) pull[i] = i * ctx.stride - (ex[i] + ey[i] * ctx.rowStride);
+  const Ends ends(ctx, buffer, first, last);
   StepStats stats;
   Lanes mass = {}, maxU2 = {};  // lane by lane, combined at the end (fixed order)
   for (std::ptrdiff_t k0 = first; k0 < last; k0 += kLanes) {
@@ -173,10 +194,10 @@ SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const Covere
       for (int l = 1; l < kLanes; ++l) consecutive = consecutive && at[l] == at[l - 1] + 1;
     Lanes f[Q];
     if (consecutive) {
-      for (int i = 0; i < Q; ++i) loadLanes(f[i], ctx.src + at[0] + pull[i]);
+      for (int i = 0; i < Q; ++i) loadLanes(f[i], ends.src + at[0] + ends.in[i]);
     } else {
       for (int i = 0; i < Q; ++i) {
-        const double* from = ctx.src + pull[i];
+        const double* from = ends.src + ends.in[i];
         f[i] = Lanes{from[at[0]], from[at[1]], from[at[2]], from[at[3]],
                      from[at[4]], from[at[5]], from[at[6]], from[at[7]]};
       }
@@ -212,11 +233,13 @@ SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const Covere
       }
       u2 = inner ? (jx * jx + jy * jy) / (rho * rho) : ux * ux + uy * uy;
     }
-    if (consecutive) {
-      for (int i = 0; i < Q; ++i) storeLanes(ctx.dst + i * ctx.stride + at[0], out[i]);
+    if (buffer) {  // whole batches: the buffer is rounded up to eight cells
+      for (int i = 0; i < Q; ++i) storeLanes(&ends.output(i, k0, 0), out[i]);
+    } else if (consecutive) {
+      for (int i = 0; i < Q; ++i) storeLanes(ends.dst + at[0] + ends.out[i], out[i]);
     } else {
       for (int i = 0; i < Q; ++i)
-        for (int l = 0; l < kLanes; ++l) ctx.dst[i * ctx.stride + at[l]] = out[i][l];
+        for (int l = 0; l < kLanes; ++l) ends.dst[ends.out[i] + at[l]] = out[i][l];
     }
     const Lanes gx = rho * sx - jx, gy = rho * sy - jy;
     const Lanes ex2 = inner ? gx : b * gx, ey2 = inner ? gy : b * gy;
@@ -234,14 +257,23 @@ SF_KERNEL_CLONES StepStats runBgkNodalLanes(const StepContext& ctx, const Covere
 
 }  // namespace
 
-StepStats CoveredNode::run(const StepContext& ctx, std::ptrdiff_t first,
-                           std::ptrdiff_t last) const {
+StepStats CoveredNode::run(const StepContext& ctx, std::ptrdiff_t first, std::ptrdiff_t last,
+                           double* buffer) const {
   const bool guo = ctx.forceScheme == ForceScheme::guo;
   if (ctx.collision == Collision::bgk)
-    return guo ? runBlock<Collision::bgk, ForceScheme::guo>(ctx, *this, first, last)
-               : runBgkNodalLanes(ctx, *this, first, last);
-  return guo ? runBlock<Collision::trt, ForceScheme::guo>(ctx, *this, first, last)
-             : runBlock<Collision::trt, ForceScheme::nodal>(ctx, *this, first, last);
+    return guo ? runBlock<Collision::bgk, ForceScheme::guo>(ctx, *this, first, last, buffer)
+               : runBgkNodalLanes(ctx, *this, first, last, buffer);
+  return guo ? runBlock<Collision::trt, ForceScheme::guo>(ctx, *this, first, last, buffer)
+             : runBlock<Collision::trt, ForceScheme::nodal>(ctx, *this, first, last, buffer);
+}
+
+void CoveredNode::scatter(const StepContext& ctx, std::ptrdiff_t first, std::ptrdiff_t last,
+                          const double* buffer) const {
+  const Ends ends(ctx, nullptr, first, last);
+  for (int i = 0; i < Q; ++i) {
+    const double* from = buffer + i * ends.pitch - first;
+    for (std::ptrdiff_t k = first; k < last; ++k) ends.dst[ends.out[i] + cells[k].node] = from[k];
+  }
 }
 
 void CoveredNode::collideCell(const StepContext& ctx, const CoveredCell& cell,
@@ -258,7 +290,11 @@ void CoveredNode::collideCell(const StepContext& ctx, const CoveredCell& cell,
   for (int i = 0; i < Q; ++i) f[i] = out[i];
 }
 
-StepStats CoveredNode::streamCollide(const StepContext& ctx) const {
+std::size_t CoveredNode::passBufferSize() const {
+  return std::size_t((std::ptrdiff_t(cells.size()) + kBlock - 1) / kBlock) * bufferSize(kBlock);
+}
+
+StepStats CoveredNode::streamCollide(const StepContext& ctx, double* buffer) const {
   exchange.resize(cells.size());
   const std::ptrdiff_t n = std::ptrdiff_t(cells.size());
   const std::ptrdiff_t blocks = (n + kBlock - 1) / kBlock;
@@ -267,10 +303,19 @@ StepStats CoveredNode::streamCollide(const StepContext& ctx) const {
 #pragma omp parallel for schedule(dynamic, 4) \
     num_threads(ctx.threads) if (n >= parallel::kLatticeNodes)
   for (std::ptrdiff_t b = 0; b < blocks; ++b)
-    partial[b] = run(ctx, b * kBlock, std::min(n, (b + 1) * kBlock));
+    partial[b] = run(ctx, b * kBlock, std::min(n, (b + 1) * kBlock),
+                     buffer ? buffer + b * bufferSize(kBlock) : nullptr);
   StepStats total;
   for (const StepStats& s : partial) total.merge(s);
   return total;
+}
+
+void CoveredNode::scatterAll(const StepContext& ctx, const double* buffer) const {
+  const std::ptrdiff_t n = std::ptrdiff_t(cells.size());
+  const std::ptrdiff_t blocks = (n + kBlock - 1) / kBlock;
+#pragma omp parallel for schedule(static) num_threads(ctx.threads) if (n >= parallel::kLatticeNodes)
+  for (std::ptrdiff_t b = 0; b < blocks; ++b)
+    scatter(ctx, b * kBlock, std::min(n, (b + 1) * kBlock), buffer + b * bufferSize(kBlock));
 }
 
 }  // namespace sf::lb

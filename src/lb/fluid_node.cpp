@@ -1,7 +1,9 @@
-// The bulk fluid loop: pull-stream and collide over contiguous spans of a row.
-// One pointer per direction into structure-of-arrays storage, no test on node
-// kind, so the loop body vectorizes; per-span reductions are combined in span
-// order so the result does not depend on the thread count.
+// The bulk fluid loop: stream and collide over contiguous spans of a row, in
+// place (the AA pattern, node.hpp). One pointer per direction into
+// structure-of-arrays storage, no test on node kind, so the loop body vectorizes;
+// per-span reductions are combined in span order: any thread count, same result.
+#include <omp.h>
+
 #include <algorithm>
 #include <chrono>
 #include <vector>
@@ -20,14 +22,27 @@ using d2q9::Q;
 // the hardware's prefetch streams long; far fewer grabs than spans.
 constexpr std::ptrdiff_t kGrabNodes = 4096;
 
-template <Collision C, ForceScheme S>
+// One span of a row. In place (the AA pattern) the slot a node reads
+// direction i from is the one it writes direction opp(i) to: one pointer per
+// slot, p_i at the input of direction i, read and then written with f*_opp(i).
+// Into another array: inputs r_i from src in its layout, outputs w_i to dst
+// in the other.
+template <Collision C, ForceScheme S, bool InPlace>
 SF_KERNEL_CLONES StepStats runSpan(const StepContext& ctx, std::ptrdiff_t first, std::ptrdiff_t n) {
+  const Slots slots = ctx.slots();
+  const Layout to = flipped(ctx.from);
   const double* __restrict s[Q];
   double* __restrict d[Q];
   for (int i = 0; i < Q; ++i) {
-    const std::ptrdiff_t pull = d2q9::ex[i] + d2q9::ey[i] * ctx.rowStride;
-    s[i] = ctx.src + i * ctx.stride + first - pull;
-    d[i] = ctx.dst + i * ctx.stride + first;
+    if constexpr (InPlace) {
+      // The output of direction opp(i) goes where the input of direction i
+      // came from; the loop reads it through the same pointer (opp below).
+      d[d2q9::opposite[i]] = ctx.dst + slots.input(ctx.from, i, first);
+      s[i] = nullptr;
+    } else {
+      s[i] = ctx.src + slots.input(ctx.from, i, first);
+      d[i] = ctx.dst + slots.post(to, i, first);
+    }
   }
   const double* __restrict s0 = s[0];
   const double* __restrict s1 = s[1];
@@ -52,8 +67,10 @@ SF_KERNEL_CLONES StepStats runSpan(const StepContext& ctx, std::ptrdiff_t first,
   double mass = 0.0, maxU2 = 0.0;
 #pragma omp simd reduction(+ : mass) reduction(max : maxU2)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
-    double f0 = s0[k], f1 = s1[k], f2 = s2[k], f3 = s3[k], f4 = s4[k], f5 = s5[k], f6 = s6[k],
-           f7 = s7[k], f8 = s8[k];
+    // In place, input i is read through the pointer that writes opp(i).
+    double f0 = (InPlace ? d0 : s0)[k], f1 = (InPlace ? d5 : s1)[k], f2 = (InPlace ? d6 : s2)[k],
+           f3 = (InPlace ? d7 : s3)[k], f4 = (InPlace ? d8 : s4)[k], f5 = (InPlace ? d1 : s5)[k],
+           f6 = (InPlace ? d2 : s6)[k], f7 = (InPlace ? d3 : s7)[k], f8 = (InPlace ? d4 : s8)[k];
     double u2;
     mass += collide<C, S>(f0, f1, f2, f3, f4, f5, f6, f7, f8, p, u2);
     maxU2 = u2 > maxU2 ? u2 : maxU2;
@@ -70,7 +87,7 @@ SF_KERNEL_CLONES StepStats runSpan(const StepContext& ctx, std::ptrdiff_t first,
   return {mass, maxU2};
 }
 
-template <Collision C, ForceScheme S>
+template <Collision C, ForceScheme S, bool InPlace>
 StepStats runSpans(const StepContext& ctx, const std::vector<FluidNode::Span>& spans) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(spans.size());
   std::vector<StepStats> partial(spans.size());
@@ -83,13 +100,13 @@ StepStats runSpans(const StepContext& ctx, const std::vector<FluidNode::Span>& s
 #pragma omp parallel for schedule(dynamic, grab) \
     num_threads(ctx.threads) if (nodes >= parallel::kLatticeNodes)
   for (std::ptrdiff_t k = 0; k < n; ++k)
-    partial[k] = runSpan<C, S>(ctx, spans[k].first, spans[k].length);
+    partial[k] = runSpan<C, S, InPlace>(ctx, spans[k].first, spans[k].length);
   StepStats total;
   for (const StepStats& p : partial) total.merge(p);
   return total;
 }
 
-template <Collision C, ForceScheme S>
+template <Collision C, ForceScheme S, bool InPlace>
 StepStats sweep(const StepContext& ctx, const std::vector<FluidNode::Span>& spans,
                 const std::vector<FluidNode::Block>& blocks, const CoveredNode& covered,
                 double& coveredSeconds) {
@@ -103,6 +120,9 @@ StepStats sweep(const StepContext& ctx, const std::vector<FluidNode::Span>& span
   for (const FluidNode::Span& s : spans) nodes += s.length;
   covered.exchange.resize(covered.cells.size());
   const bool parallel = nodes >= parallel::kLatticeNodes;
+  // In place, a block's covered cells are computed before its spans
+  // overwrite their inputs, into a buffer of the thread's.
+  std::vector<std::vector<double>> buffers(InPlace ? std::size_t(std::max(1, ctx.threads)) : 0);
   // Blocks handed out one at a time as threads come free: the cores of a
   // shared machine do not keep the same speed, and with halves fixed in
   // advance one of two threads sat idle for 0.9 ms of a 6 ms sweep (AMD EPYC,
@@ -112,21 +132,34 @@ StepStats sweep(const StepContext& ctx, const std::vector<FluidNode::Span>& span
   for (std::ptrdiff_t b = 0; b < n; ++b) {
     const std::int32_t span0 = b == 0 ? 0 : blocks[b - 1].spanEnd;
     const std::int32_t cell0 = b == 0 ? 0 : blocks[b - 1].cellEnd;
+    const std::int32_t cell1 = blocks[b].cellEnd;
     // The block's covered cells and exchanges asked for now, to be in cache
-    // when its spans are done: the sweep has evicted them since they were
-    // written, and a block's few hundred give the hardware's prefetcher too
-    // short a stream.
-    const std::size_t cells = std::size_t(blocks[b].cellEnd - cell0);
+    // when they are done: the sweep has evicted them since they were written,
+    // and a block's few hundred give the hardware's prefetcher too short a
+    // stream.
+    const std::size_t cells = std::size_t(cell1 - cell0);
     prefetchForRead(covered.cells.data() + cell0, cells * sizeof(CoveredCell));
     prefetchForWrite(covered.exchange.data() + cell0, cells * sizeof(Vec2));
+    double* buffer = nullptr;
+    if (InPlace && cells > 0) {
+      std::vector<double>& mine = buffers[std::size_t(omp_get_thread_num())];
+      mine.resize(std::max(mine.size(), CoveredNode::bufferSize(cells)));
+      buffer = mine.data();
+      const auto t0 = Clock::now();
+      coveredU2[b] = covered.run(ctx, cell0, cell1, buffer).maxU2;
+      seconds[b] = std::chrono::duration<double>(Clock::now() - t0).count();
+    }
     // The block's spans whole, then its covered cells over them: the mass is
     // the spans', which hold the covered nodes too.
     for (std::int32_t k = span0; k < blocks[b].spanEnd; ++k)
-      partial[k] = runSpan<C, S>(ctx, spans[k].first, spans[k].length);
-    if (blocks[b].cellEnd > cell0) {
+      partial[k] = runSpan<C, S, InPlace>(ctx, spans[k].first, spans[k].length);
+    if (cells > 0) {
       const auto t0 = Clock::now();
-      coveredU2[b] = covered.run(ctx, cell0, blocks[b].cellEnd).maxU2;
-      seconds[b] = std::chrono::duration<double>(Clock::now() - t0).count();
+      if (InPlace)
+        covered.scatter(ctx, cell0, cell1, buffer);
+      else
+        coveredU2[b] = covered.run(ctx, cell0, cell1, nullptr).maxU2;
+      seconds[b] += std::chrono::duration<double>(Clock::now() - t0).count();
     }
   }
   StepStats total;
@@ -137,6 +170,40 @@ StepStats sweep(const StepContext& ctx, const std::vector<FluidNode::Span>& span
   coveredSeconds += spent / (parallel ? std::max(1, ctx.threads) : 1);
   return total;
 }
+
+// The kernel for the step's collision, forcing and whether it is in place.
+template <template <Collision, ForceScheme, bool> class Run, class... Args>
+StepStats dispatch(const StepContext& ctx, Args&&... args) {
+  const bool guo = ctx.forceScheme == ForceScheme::guo, bgk = ctx.collision == Collision::bgk;
+  if (ctx.inPlace()) {
+    if (bgk)
+      return guo ? Run<Collision::bgk, ForceScheme::guo, true>::run(ctx, args...)
+                 : Run<Collision::bgk, ForceScheme::nodal, true>::run(ctx, args...);
+    return guo ? Run<Collision::trt, ForceScheme::guo, true>::run(ctx, args...)
+               : Run<Collision::trt, ForceScheme::nodal, true>::run(ctx, args...);
+  }
+  if (bgk)
+    return guo ? Run<Collision::bgk, ForceScheme::guo, false>::run(ctx, args...)
+               : Run<Collision::bgk, ForceScheme::nodal, false>::run(ctx, args...);
+  return guo ? Run<Collision::trt, ForceScheme::guo, false>::run(ctx, args...)
+             : Run<Collision::trt, ForceScheme::nodal, false>::run(ctx, args...);
+}
+
+template <Collision C, ForceScheme S, bool InPlace>
+struct SpansRun {
+  static StepStats run(const StepContext& ctx, const std::vector<FluidNode::Span>& spans) {
+    return runSpans<C, S, InPlace>(ctx, spans);
+  }
+};
+
+template <Collision C, ForceScheme S, bool InPlace>
+struct SweepRun {
+  static StepStats run(const StepContext& ctx, const std::vector<FluidNode::Span>& spans,
+                       const std::vector<FluidNode::Block>& blocks, const CoveredNode& covered,
+                       double& coveredSeconds) {
+    return sweep<C, S, InPlace>(ctx, spans, blocks, covered, coveredSeconds);
+  }
+};
 
 }  // namespace
 
@@ -178,25 +245,11 @@ bool FluidNode::sweepsWith(const CoveredNode& covered) const {
 
 StepStats FluidNode::streamCollideWith(const StepContext& ctx, const CoveredNode& covered,
                                        double& coveredSeconds) const {
-  const std::vector<Block>& blocks = blocks_;
-  const bool guo = ctx.forceScheme == ForceScheme::guo;
-  if (ctx.collision == Collision::bgk)
-    return guo ? sweep<Collision::bgk, ForceScheme::guo>(ctx, spans, blocks, covered,
-                                                         coveredSeconds)
-               : sweep<Collision::bgk, ForceScheme::nodal>(ctx, spans, blocks, covered,
-                                                           coveredSeconds);
-  return guo ? sweep<Collision::trt, ForceScheme::guo>(ctx, spans, blocks, covered, coveredSeconds)
-             : sweep<Collision::trt, ForceScheme::nodal>(ctx, spans, blocks, covered,
-                                                         coveredSeconds);
+  return dispatch<SweepRun>(ctx, spans, blocks_, covered, coveredSeconds);
 }
 
 StepStats FluidNode::streamCollide(const StepContext& ctx) const {
-  const bool guo = ctx.forceScheme == ForceScheme::guo;
-  if (ctx.collision == Collision::bgk)
-    return guo ? runSpans<Collision::bgk, ForceScheme::guo>(ctx, spans)
-               : runSpans<Collision::bgk, ForceScheme::nodal>(ctx, spans);
-  return guo ? runSpans<Collision::trt, ForceScheme::guo>(ctx, spans)
-             : runSpans<Collision::trt, ForceScheme::nodal>(ctx, spans);
+  return dispatch<SpansRun>(ctx, spans);
 }
 
 }  // namespace sf::lb

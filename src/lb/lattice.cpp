@@ -30,24 +30,16 @@ Lattice::Lattice(const ResolvedLattice& params) : p_(params) {
   // step share a handful of L1 sets; padding spreads them over all of them.
   const std::ptrdiff_t nodes = rowStride_ * (p_.ny + 2);
   stride_ = (nodes + 511) / 512 * 512 + 56;
-  const std::size_t count = 9 * static_cast<std::size_t>(stride_);
-  f_ = allocatePopulations(count);
-  try {
-    g_ = allocatePopulations(count);
-    kind_.reserve(stride_);
-  } catch (...) {
-    std::free(f_);
-    throw;
-  }
+  f_ = allocatePopulations(populationSlots());
+  kind_.reserve(stride_);
   // First touch in parallel, the way the step will use the memory.
   const double rho0 = p_.def.density;
   const std::ptrdiff_t n = stride_;
   for (int d = 0; d < 9; ++d) {
     double* a = f_ + d * stride_;
-    double* b = g_ + d * stride_;
     const double value = d2q9::w[d] * rho0;
 #pragma omp parallel for schedule(static) num_threads(threads_.get())
-    for (std::ptrdiff_t k = 0; k < n; ++k) a[k] = b[k] = value;
+    for (std::ptrdiff_t k = 0; k < n; ++k) a[k] = value;
   }
   rebuildTopology();
   initialize([](const Vec2&, double&, Vec2&) {});
@@ -55,7 +47,24 @@ Lattice::Lattice(const ResolvedLattice& params) : p_(params) {
 
 Lattice::~Lattice() {
   std::free(f_);
-  std::free(g_);
+  std::free(spare_);
+}
+
+void Lattice::keepPrevious(bool keep) {
+  if (keep == (spare_ != nullptr)) return;
+  canUndo_ = false;
+  if (!keep) {
+    std::free(spare_);
+    spare_ = nullptr;
+    return;
+  }
+  spare_ = allocatePopulations(populationSlots());
+  // The slots no step writes (fixed solids' insides) as they are in f_.
+  std::copy(f_, f_ + populationSlots(), spare_);
+}
+
+void Lattice::fill() {
+  for (const auto& k : kinds_) k->fill(f_, layout_, threads_.get());
 }
 
 void Lattice::reconfigure(const ResolvedLattice& params) {
@@ -94,7 +103,7 @@ void Lattice::reconfigure(const ResolvedLattice& params) {
   if (wallsChanged)
     rebuildTopology();  // fills the walls' slots
   else if (stepChanged)
-    for (const auto& k : kinds_) k->fill(f_, threads_.get());
+    fill();
 }
 
 void Lattice::setThreads(int threads) {
@@ -104,7 +113,8 @@ void Lattice::setThreads(int threads) {
 StepContext Lattice::contextFor(const ResolvedLattice& p) const {
   StepContext c;
   c.src = f_;
-  c.dst = g_;
+  c.dst = spare_ ? spare_ : f_;
+  c.from = layout_;
   c.stride = stride_;
   c.rowStride = rowStride_;
   c.collision = p.def.collision;
@@ -123,54 +133,81 @@ StepStats Lattice::step(double machLimit) {
   const auto t0 = Profile::Clock::now();
   const StepContext ctx = context();
   StepStats stats;
-  // The covered cells in the bulk's sweep when they can be, else after it
-  // (then the sweep times them, and the bulk's time is the rest). None: the
-  // plain sweep (solids all beyond the lattice's walls).
+  // The covered cells in the bulk's sweep when they can be, else in a pass
+  // of their own (then the sweep times them, and the bulk's time is the
+  // rest): after the bulk into another array, or in place before it, into a
+  // buffer written over the bulk's outputs after it. None: the plain sweep
+  // (solids all beyond the lattice's walls).
   const FluidNode& fluid = static_cast<const FluidNode&>(*kinds_.front());
-  const bool together = !covered_.cells.empty() && fluid.sweepsWith(covered_);
-  double coveredSeconds = 0;
+  const bool covered = !covered_.cells.empty();
+  const bool together = covered && fluid.sweepsWith(covered_);
+  const bool before = covered && !together && ctx.inPlace();
+  double coveredSeconds = 0, coveredU2 = 0;
+  const auto coveredPass = [&](double* buffer) {
+    const auto c0 = Profile::Clock::now();
+    coveredU2 = covered_.streamCollide(ctx, buffer).maxU2;
+    coveredSeconds += std::chrono::duration<double>(Profile::Clock::now() - c0).count();
+  };
+  if (before) {
+    coveredBuffer_.resize(covered_.passBufferSize());
+    coveredPass(coveredBuffer_.data());
+  }
   for (const auto& k : kinds_)
     stats.merge(k.get() == &fluid && together
                     ? fluid.streamCollideWith(ctx, covered_, coveredSeconds)
                     : k->streamCollide(ctx));
-  const auto t1 = Profile::Clock::now();
-  // Over the bulk's values: the bulk's mass already holds these nodes.
-  if (!together) stats.maxU2 = std::max(stats.maxU2, covered_.streamCollide(ctx).maxU2);
+  if (covered && !together) {
+    if (before) {
+      const auto c0 = Profile::Clock::now();
+      covered_.scatterAll(ctx, coveredBuffer_.data());
+      coveredSeconds += std::chrono::duration<double>(Profile::Clock::now() - c0).count();
+    } else {
+      coveredPass(nullptr);
+    }
+    // Over the bulk's values: the bulk's mass already holds these nodes.
+    stats.maxU2 = std::max(stats.maxU2, coveredU2);
+  }
   const auto t2 = Profile::Clock::now();
-  const double bulk = std::chrono::duration<double>(t1 - t0).count();
-  profile.add(Stage::latticeBulk, std::max(0.0, bulk - coveredSeconds));
-  if (!covered_.cells.empty())
-    profile.add(Stage::latticeCovered,
-                std::chrono::duration<double>(t2 - t1).count() + std::min(bulk, coveredSeconds));
-  if (!std::isfinite(stats.mass) || !(stats.maxU2 <= machLimit * machLimit))
-    reportInstability(stats, machLimit);
-  std::swap(f_, g_);
-  for (const auto& k : kinds_) k->fill(f_, threads_.get());
+  const double all = std::chrono::duration<double>(t2 - t0).count();
+  profile.add(Stage::latticeBulk, std::max(0.0, all - coveredSeconds));
+  if (covered) profile.add(Stage::latticeCovered, std::min(all, coveredSeconds));
+  const bool unstable = !std::isfinite(stats.mass) || !(stats.maxU2 <= machLimit * machLimit);
+  // Another array: a refused step leaves the state before it as it was.
+  if (unstable && spare_) reportInstability(stats, machLimit, spare_, flipped(layout_));
+  if (spare_) std::swap(f_, spare_);
+  layout_ = flipped(layout_);
+  fill();
   lastMach_ = std::sqrt(stats.maxU2);
-  canUndo_ = true;
+  canUndo_ = spare_ != nullptr;
   profile.lap(Stage::latticeFill, t2);
+  // In place the step is done either way: the state is the one it made.
+  if (unstable) reportInstability(stats, machLimit, f_, layout_);
   return stats;
 }
 
 void Lattice::undoStep() {
   if (!canUndo_) throw Error("STATE UNDO", "there is no lattice step to undo");
-  // The step collided f_ into g_ and swapped: the state before it is intact in g_.
-  std::swap(f_, g_);
+  // The step wrote the other array and swapped: the state before it is intact there.
+  std::swap(f_, spare_);
+  layout_ = flipped(layout_);
   canUndo_ = false;
 }
 
-void Lattice::moments(const double* f, std::int64_t x, double& rho, double& jx, double& jy) const {
+void Lattice::moments(const double* f, Layout layout, std::int64_t x, double& rho, double& jx,
+                      double& jy) const {
+  const Slots s = slots();
   rho = jx = jy = 0;
   for (int d = 0; d < 9; ++d) {
-    const double v = f[d * stride_ + x];
+    const double v = f[s.post(layout, d, x)];
     rho += v;
     jx += d2q9::ex[d] * v;
     jy += d2q9::ey[d] * v;
   }
 }
 
-void Lattice::reportInstability(const StepStats& stats, double machLimit) const {
-  // Find the culprit in the rejected new state (g_); the current state stays.
+void Lattice::reportInstability(const StepStats& stats, double machLimit, const double* f,
+                                Layout layout) const {
+  // Find the culprit in the new state the step wrote (f, in `layout`).
   std::int64_t worst = -1;
   double worstU2 = -1.0;
   bool nan = !std::isfinite(stats.mass);
@@ -179,7 +216,7 @@ void Lattice::reportInstability(const StepStats& stats, double machLimit) const 
       const std::int64_t x = index(i, j);
       if (!holdsFluid(x)) continue;
       double rho, jx, jy;
-      moments(g_, x, rho, jx, jy);
+      moments(f, layout, x, rho, jx, jy);
       const double u2 = (jx * jx + jy * jy) / (rho * rho);
       if (nan && !std::isfinite(rho + jx + jy)) {
         worst = x;
@@ -207,7 +244,7 @@ Vec2 Lattice::velocityFromMoments(double rho, double jx, double jy) const {
 
 Vec2 Lattice::latticeVelocity(std::int64_t x) const {
   double rho, jx, jy;
-  moments(f_, x, rho, jx, jy);
+  moments(f_, layout_, x, rho, jx, jy);
   return velocityFromMoments(rho, jx, jy);
 }
 
@@ -219,8 +256,8 @@ bool Lattice::holdsFluid(std::int64_t x) const {
 double Lattice::density(int i, int j) const {
   const std::int64_t x = index(i, j);
   if (!holdsFluid(x)) return p_.def.density;
-  double rho = 0;
-  for (int d = 0; d < 9; ++d) rho += f_[d * stride_ + x];
+  double rho, jx, jy;
+  moments(f_, layout_, x, rho, jx, jy);
   return rho;
 }
 
@@ -240,7 +277,7 @@ void Lattice::rowFields(int j, double* rho, Vec2* u) const {
       continue;
     }
     double r, jx, jy;
-    moments(f_, x, r, jx, jy);
+    moments(f_, layout_, x, r, jx, jy);
     rho[i] = r;
     u[i] = velocityFromMoments(r, jx, jy) * p_.latticeSpeed();
   }
@@ -266,7 +303,7 @@ double Lattice::mass() const {
   for (int j = 0; j < p_.ny; ++j)
     for (int i = 0; i < p_.nx; ++i)
       if (holdsFluid(index(i, j)))
-        for (int d = 0; d < 9; ++d) m += f_[d * stride_ + index(i, j)];
+        for (int d = 0; d < 9; ++d) m += f_[slots().post(layout_, d, index(i, j))];
   return m * p_.h * p_.h;
 }
 
@@ -276,9 +313,9 @@ Vec2 Lattice::momentum() const {
     for (int i = 0; i < p_.nx; ++i) {
       const std::int64_t x = index(i, j);
       if (!holdsFluid(x)) continue;
-      double rho = 0;
-      for (int d = 0; d < 9; ++d) rho += f_[d * stride_ + x];
-      m += rho * latticeVelocity(x);
+      double rho, jx, jy;
+      moments(f_, layout_, x, rho, jx, jy);
+      m += rho * velocityFromMoments(rho, jx, jy);
     }
   return m * p_.h * p_.h * p_.latticeSpeed();
 }
@@ -310,14 +347,15 @@ void Lattice::initialize(const std::function<void(const Vec2&, double&, Vec2&)>&
                         "}");
       setNodeState(x, rho, u * (p_.dt / p_.h));
     }
-  for (const auto& k : kinds_) k->fill(f_, threads_.get());
+  fill();
 }
 
 void Lattice::setNodeState(std::int64_t x, double rho, const Vec2& u) {
   canUndo_ = false;
   double f[9];
   collidedEquilibrium(context(), rho, u, f);
-  for (int d = 0; d < 9; ++d) f_[d * stride_ + x] = f[d];
+  const Slots s = slots();
+  for (int d = 0; d < 9; ++d) f_[s.post(layout_, d, x)] = f[d];
 }
 
 void Lattice::collidedEquilibrium(const StepContext& ctx, double rho, const Vec2& u,
@@ -333,11 +371,25 @@ void Lattice::collidedEquilibrium(const StepContext& ctx, double rho, const Vec2
 }
 
 double Lattice::population(int direction, int i, int j) const {
-  return f_[direction * stride_ + index(i, j)];
+  return f_[slots().post(layout_, direction, index(i, j))];
+}
+
+std::vector<double> Lattice::populations() const {
+  std::vector<double> f(9 * nodes(), 0.0);
+  const Slots s = slots();
+  for (int j = 0; j < p_.ny; ++j)
+    for (int i = 0; i < p_.nx; ++i) {
+      const std::int64_t x = index(i, j);
+      if (!holdsFluid(x)) continue;
+      for (int d = 0; d < 9; ++d)
+        f[(std::size_t(d) * p_.ny + j) * p_.nx + i] = f_[s.post(layout_, d, x)];
+    }
+  return f;
 }
 
 std::size_t Lattice::memoryBytes() const {
-  return 2 * 9 * stride_ * sizeof(double) + kind_.capacity() * sizeof(NodeKind);
+  return (spare_ ? 2 : 1) * populationSlots() * sizeof(double) +
+         kind_.capacity() * sizeof(NodeKind);
 }
 
 // ---- obstacles -------------------------------------------------------------
@@ -453,9 +505,10 @@ void Lattice::pulledMoments(const std::vector<CoveredCell>& cells, std::vector<d
   rho.resize(cells.size());
   j.resize(cells.size());
   for (std::size_t k = 0; k < cells.size(); ++k) {
+    const Slots s = slots();
     double r = 0, jx = 0, jy = 0;
     for (int d = 0; d < 9; ++d) {
-      const double f = f_[d * stride_ + cells[k].node - (d2q9::ex[d] + d2q9::ey[d] * rowStride_)];
+      const double f = f_[s.input(layout_, d, cells[k].node)];
       r += f, jx += d2q9::ex[d] * f, jy += d2q9::ey[d] * f;
     }
     rho[k] = r;
@@ -534,14 +587,15 @@ ObstacleInfo Lattice::obstacleInfo(int id) const {
   // Momentum exchange over the wall links: what leaves the fluid node towards
   // the wall minus what comes back, per step.
   const double scale = p_.h * p_.h * p_.h / (p_.dt * p_.dt);
+  const Slots s = slots();
   for (const auto& k : kinds_) {
     const auto* links = dynamic_cast<const LinkNode*>(k.get());
     if (!links || dynamic_cast<const PeriodicNode*>(k.get())) continue;
     for (const Link& l : links->links) {
       if (l.owner != id) continue;
-      const int in = int(l.dst / stride_), out = int(l.src / stride_);
-      const Vec2 dp = f_[l.src] * Vec2(d2q9::ex[out], d2q9::ey[out]) -
-                      f_[l.dst] * Vec2(d2q9::ex[in], d2q9::ey[in]);
+      const int in = l.in, out = l.out;
+      const Vec2 dp = f_[s.post(layout_, out, l.from)] * Vec2(d2q9::ex[out], d2q9::ey[out]) -
+                      f_[s.input(layout_, in, l.node)] * Vec2(d2q9::ex[in], d2q9::ey[in]);
       const Vec2 F = dp * scale;
       const int i = l.node % rowStride_ - 1, j = l.node / rowStride_ - 1;
       const Vec2 arm = position(i, j) - 0.5 * p_.h * Vec2(d2q9::ex[in], d2q9::ey[in]) - centre;

@@ -11,7 +11,7 @@
 //              even part f1+ = -tau+ w rho/c_s^2 Q:grad u_lat, so tau+ dt;
 //              odd part  f2- ~ tau- (tau+ - 1/2) grad^2 u_lat, so tau- dt^2
 //              (a uniform force's odd share lies in the equilibrium, below).
-// The stored state is post-collision, and at tau = 1 it holds no trace of N,
+// A node's stored state is post-collision, and at tau = 1 it holds no trace of N,
 // the pre-collision non-equilibrium part. So each node's pre-collision state
 // is rebuilt, converted and collided again with the new parameters (by its own
 // operator: the fluid's, or a covered cell's Noble-Torczynski one):
@@ -82,85 +82,79 @@ void convertNode(const StepContext& from, const StepContext& to, const Scales& k
 }  // namespace
 
 void Lattice::convertPopulations(const ResolvedLattice& next) {
-  const StepContext from = context();
+  // The old state, read throughout from a copy (a node's new outputs sit
+  // where its neighbours' old ones are read); the new written into f_, in
+  // the same layout (walls' slots are filled after).
+  const std::vector<double> old(f_, f_ + populationSlots());
+  StepContext from = context();
+  from.src = old.data();
   const StepContext to = contextFor(next);
   const Scales k = scalesBetween(p_, next);
   const Vec2 F(from.params.fx, from.params.fy);
   const double tau = p_.tau;
+  const Slots s = slots();
   std::vector<CoveredCell> cells = covered_.cells;
   for (CoveredCell& c : cells) c.ux *= k.velocity, c.uy *= k.velocity;
-  // Twice: first to find a node whose converted state is not finite (a scene
-  // blowing up already: a solid at an absurd speed), to refuse the change
-  // with nothing touched; then to write each fluid node's slots anew into g_,
-  // which holds every other slot as it was (walls' slots are filled after).
-  // The old state is read from f_ throughout.
+  // The first node whose converted state is not finite (a scene blowing up
+  // already: a solid at an absurd speed), to refuse the change with.
   std::int64_t bad = std::numeric_limits<std::int64_t>::max();
-  for (const bool commit : {false, true}) {
-    if (commit) {
-      if (bad != std::numeric_limits<std::int64_t>::max()) {
-        const int i = int(bad % rowStride_) - 1, j = int(bad / rowStride_) - 1;
-        throw Error("UNSTABLE NAN", "the flow at the new step would not be finite at node (" +
-                                        std::to_string(i) + ", " + std::to_string(j) +
-                                        "): the scene is unstable there already");
-      }
-      std::copy(f_, f_ + populationCount(), g_);
-    }
-    // Returns x when f is not finite (checking), else the largest index.
-    const auto emit = [&](std::int64_t x, const double(&f)[Q]) {
-      if (commit) {
-        for (int i = 0; i < Q; ++i) g_[i * stride_ + x] = f[i];
-        return std::numeric_limits<std::int64_t>::max();
-      }
-      for (int i = 0; i < Q; ++i)
-        if (!std::isfinite(f[i])) return x;
-      return std::numeric_limits<std::int64_t>::max();
-    };
-    // Fluid nodes and Zou-He edges: the collision added F to the first moment.
-    const auto convertFluid = [&](std::int64_t x, double(&n)[Q]) {
-      nonEquilibrium(n);
-      double rho, jx, jy;
-      moments(f_, x, rho, jx, jy);
-      convertNode(from, to, k, rho, Vec2(jx, jy) - F, n);
-      double u2;
-      collide(to.collision, to.forceScheme, n, to.params, u2);
-      return emit(x, n);
-    };
+  const auto write = [&](std::int64_t x, const double(&f)[Q]) {
+    bool finite = true;
+    for (int i = 0; i < Q; ++i) f_[s.post(layout_, i, x)] = f[i], finite &= std::isfinite(f[i]);
+    return finite ? std::numeric_limits<std::int64_t>::max() : x;
+  };
+  const auto pulled = [&](std::int64_t x, double(&n)[Q]) {
+    for (int d = 0; d < Q; ++d) n[d] = old[s.input(layout_, d, x)];
+  };
+  // Fluid nodes and Zou-He edges: the collision added F to the first moment.
+  const auto convertFluid = [&](std::int64_t x, double(&n)[Q]) {
+    nonEquilibrium(n);
+    double rho, jx, jy;
+    moments(old.data(), layout_, x, rho, jx, jy);
+    convertNode(from, to, k, rho, Vec2(jx, jy) - F, n);
+    double u2;
+    collide(to.collision, to.forceScheme, n, to.params, u2);
+    return write(x, n);
+  };
 #pragma omp parallel for schedule(static) num_threads(threads_.get()) reduction(min : bad)
-    for (int j = 0; j < p_.ny; ++j)
-      for (int i = 0; i < p_.nx; ++i) {
-        const std::int64_t x = index(i, j);
-        if (kind_[x] != NodeKind::fluid) continue;
+  for (int j = 0; j < p_.ny; ++j)
+    for (int i = 0; i < p_.nx; ++i) {
+      const std::int64_t x = index(i, j);
+      if (kind_[x] != NodeKind::fluid) continue;
+      double n[Q];
+      pulled(x, n);
+      bad = std::min(bad, convertFluid(x, n));
+    }
+  for (const auto& kind : kinds_)
+    if (const auto* edge = dynamic_cast<const ZouHeNode*>(kind.get()))
+      for (const std::int64_t x : edge->nodes) {
         double n[Q];
-        for (int d = 0; d < Q; ++d)
-          n[d] = f_[d * stride_ + x - d2q9::ex[d] - d2q9::ey[d] * rowStride_];
+        edge->pulled(from, x, n);
         bad = std::min(bad, convertFluid(x, n));
       }
-    for (const auto& kind : kinds_)
-      if (const auto* edge = dynamic_cast<const ZouHeNode*>(kind.get()))
-        for (const std::int64_t x : edge->nodes) {
-          double n[Q];
-          edge->pulled(from, x, n);
-          bad = std::min(bad, convertFluid(x, n));
-        }
-    // Covered cells, over the fluid's: their collision gave the first moment
-    // (1 - B) j + B rho u_s + F.
-    for (std::size_t m = 0; m < cells.size(); ++m) {
-      const CoveredCell& c = covered_.cells[m];
-      double n[Q];
-      for (int d = 0; d < Q; ++d)
-        n[d] = f_[d * stride_ + c.node - d2q9::ex[d] - d2q9::ey[d] * rowStride_];
-      nonEquilibrium(n);
-      double rho, jx, jy;
-      moments(f_, c.node, rho, jx, jy);
-      const double b = c.eps * (tau - 0.5) / ((1.0 - c.eps) + (tau - 0.5));
-      const Vec2 us(c.ux, c.uy);
-      const Vec2 j = b < 1 ? Vec2((Vec2(jx, jy) - F - b * rho * us) / (1 - b)) : Vec2(rho * us);
-      convertNode(from, to, k, rho, j, n);
-      covered_.collideCell(to, cells[m], n);
-      bad = std::min(bad, emit(c.node, n));
-    }
+  // Covered cells, over the fluid's: their collision gave the first moment
+  // (1 - B) j + B rho u_s + F.
+  for (std::size_t m = 0; m < cells.size(); ++m) {
+    const CoveredCell& c = covered_.cells[m];
+    double n[Q];
+    pulled(c.node, n);
+    nonEquilibrium(n);
+    double rho, jx, jy;
+    moments(old.data(), layout_, c.node, rho, jx, jy);
+    const double b = c.eps * (tau - 0.5) / ((1.0 - c.eps) + (tau - 0.5));
+    const Vec2 us(c.ux, c.uy);
+    const Vec2 j = b < 1 ? Vec2((Vec2(jx, jy) - F - b * rho * us) / (1 - b)) : Vec2(rho * us);
+    convertNode(from, to, k, rho, j, n);
+    covered_.collideCell(to, cells[m], n);
+    bad = std::min(bad, write(c.node, n));
   }
-  std::swap(f_, g_);
+  if (bad != std::numeric_limits<std::int64_t>::max()) {
+    std::copy(old.begin(), old.end(), f_);
+    const int i = int(bad % rowStride_) - 1, j = int(bad / rowStride_) - 1;
+    throw Error("UNSTABLE NAN", "the flow at the new step would not be finite at node (" +
+                                    std::to_string(i) + ", " + std::to_string(j) +
+                                    "): the scene is unstable there already");
+  }
   covered_.cells.swap(cells);
   canUndo_ = false;
   lastMach_ *= k.velocity;

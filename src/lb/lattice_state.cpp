@@ -57,10 +57,21 @@ void Lattice::saveState(ByteWriter& out) const {
     putVec2(out, c.velocity), out.put(c.spin);
     putVec2(out, c.force), out.put(c.torque), out.put(std::uint64_t(c.cells));
   }
-  const std::size_t count = populationCount();
+  // The post-collision populations of the nodes that hold fluid, in the
+  // layout of the two-array step that wrote versions 1 to 3 (f*_d in slot d at
+  // its node), 0 in every other slot: the same bytes whichever layout the
+  // array is in, and all a step needs (the walls' slots follow by the links).
+  const std::size_t count = populationSlots();
+  std::vector<double> post(count, 0.0);
+  const Slots s = slots();
+  for (int j = 0; j < p_.ny; ++j)
+    for (int i = 0; i < p_.nx; ++i) {
+      const std::int64_t x = index(i, j);
+      if (holdsFluid(x))
+        for (int d = 0; d < 9; ++d) post[d * stride_ + x] = f_[s.post(layout_, d, x)];
+    }
   out.put(std::uint64_t(count));
-  out.putRaw(f_, count * sizeof(double));
-  out.putRaw(g_, count * sizeof(double));
+  out.putRaw(post.data(), count * sizeof(double));
   // The cells as their struct's bytes (the format), with the padding after
   // `interior` zeroed: it is never written, and would make equal scenes'
   // checkpoints and hashes differ.
@@ -114,10 +125,22 @@ std::unique_ptr<Lattice> Lattice::loadState(ByteReader& in) {
     lattice->setCircleLoad(k, force, torque, std::size_t(cells));
   }
   const auto count = in.get<std::uint64_t>("populations");
-  if (count != lattice->populationCount())
+  if (count != lattice->populationSlots())
     ByteReader::fail("its populations do not fit its lattice");
-  in.getRaw(lattice->f_, count * sizeof(double), "populations");
-  in.getRaw(lattice->g_, count * sizeof(double), "populations");
+  std::vector<double> post(count);
+  in.getRaw(post.data(), count * sizeof(double), "populations");
+  // Versions 1 to 3 hold the two-array step's second array too, unread.
+  if (in.version < 4) in.skip(count * sizeof(double), "populations");
+  const Slots s = lattice->slots();
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const std::int64_t x = lattice->index(i, j);
+      if (lattice->holdsFluid(x))
+        for (int d = 0; d < 9; ++d)
+          lattice->f_[s.post(Layout::collided, d, x)] = post[d * lattice->stride_ + x];
+    }
+  lattice->layout_ = Layout::collided;
+  lattice->fill();
   std::vector<CoveredCell> cells;
   in.get(cells, "covered cells");
   const bool equilibriumInterior = in.getBool("covered cells");

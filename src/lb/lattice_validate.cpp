@@ -13,7 +13,7 @@ std::vector<std::string> Lattice::validate() const {
       const std::int64_t x = index(i, j);
       if (!holdsFluid(x)) continue;
       double rho, jx, jy;
-      moments(f_, x, rho, jx, jy);
+      moments(f_, layout_, x, rho, jx, jy);
       if (!std::isfinite(rho + jx + jy) || !(rho > 0)) {
         problems.push_back("lattice node (" + std::to_string(i) + ", " + std::to_string(j) +
                            ") holds density " + formatNumber(rho));

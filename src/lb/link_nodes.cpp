@@ -1,17 +1,29 @@
-// Wall and periodic kinds: after the swap, write the slots that fluid nodes pull
-// from. Links never read a slot that another link writes (they read fluid nodes
-// only), so their order does not matter.
+// Wall and periodic kinds: after a step, write the slots that fluid nodes
+// read their inputs from next step. Links never read a slot that another link
+// writes (they read fluid nodes' outputs only), so their order does not matter.
 #include "sandflow/core/parallel.hpp"
 #include "sandflow/lb/node.hpp"
 
 namespace sf::lb {
 
-void LinkNode::fill(double* f, int threads) const {
+void LinkNode::resolve(const Slots& slots) {
+  for (const Layout layout : {Layout::collided, Layout::streamed}) {
+    std::vector<SlotCopy>& copies = copies_[int(layout)];
+    copies.clear();
+    copies.reserve(links.size());
+    for (const Link& l : links)
+      copies.push_back(
+          {slots.input(layout, l.in, l.node), slots.post(layout, l.out, l.from), l.add});
+  }
+}
+
+void LinkNode::fill(double* f, Layout layout, int threads) const {
   // On several threads when there are enough: the slots are scattered over
   // the lattice's edges, each a wait on memory, and the waits overlap.
-  const std::ptrdiff_t n = std::ptrdiff_t(links.size());
+  const std::vector<SlotCopy>& copies = copies_[int(layout)];
+  const std::ptrdiff_t n = std::ptrdiff_t(copies.size());
 #pragma omp parallel for schedule(static) num_threads(threads) if (n >= parallel::kLinks)
-  for (std::ptrdiff_t k = 0; k < n; ++k) f[links[k].dst] = f[links[k].src] + links[k].add;
+  for (std::ptrdiff_t k = 0; k < n; ++k) f[copies[k].dst] = f[copies[k].src] + copies[k].add;
 }
 
 }  // namespace sf::lb

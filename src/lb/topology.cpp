@@ -173,13 +173,14 @@ void Lattice::rebuildTopology() {
                           : 0;
         zouHe[s]->nodes.push_back(x);
       }
+      const std::int32_t node = std::int32_t(x);
       for (int d = 1; d < 9; ++d) {
+        const std::int8_t in = std::int8_t(d);
         const int si = i - ex[d], sj = j - ey[d];
-        const std::int64_t slot = d * stride_ + index(si, sj);
         const Where w = where.at(si, sj);
         if (holdsFluidKind(w.kind)) {
           if (w.node != index(si, sj))
-            periodic->links.push_back({slot, d * stride_ + w.node, 0.0, -1, std::int32_t(x)});
+            periodic->links.push_back({node, in, in, std::int32_t(w.node), 0.0, -1});
           continue;
         }
         if (w.kind == NodeKind::open && k != NodeKind::fluid) continue;  // Zou-He rebuilds it
@@ -189,13 +190,13 @@ void Lattice::rebuildTopology() {
           // along the diagonal's components is fluid and which is wall.
           const Where a = where.at(i - ex[d], j), b = where.at(i, j - ey[d]);
           if (holdsFluidKind(a.kind) && isWall(b.kind)) {
-            slip->links.push_back({slot, d2q9::direction(ex[d], -ey[d]) * stride_ + a.node, 0.0,
-                                   w.owner, std::int32_t(x)});
+            slip->links.push_back({node, in, std::int8_t(d2q9::direction(ex[d], -ey[d])),
+                                   std::int32_t(a.node), 0.0, w.owner});
             continue;
           }
           if (holdsFluidKind(b.kind) && isWall(a.kind)) {
-            slip->links.push_back({slot, d2q9::direction(-ex[d], ey[d]) * stride_ + b.node, 0.0,
-                                   w.owner, std::int32_t(x)});
+            slip->links.push_back({node, in, std::int8_t(d2q9::direction(-ex[d], ey[d])),
+                                   std::int32_t(b.node), 0.0, w.owner});
             continue;
           }
         }
@@ -206,10 +207,14 @@ void Lattice::rebuildTopology() {
           add = 6.0 * d2q9::w[d] * rho0 * (ex[d] * u.x() + ey[d] * u.y());
         }
         LinkNode& target = w.kind == NodeKind::slip ? static_cast<LinkNode&>(*slip) : *bounce;
-        target.links.push_back({slot, back * stride_ + x, add, w.owner, std::int32_t(x)});
+        target.links.push_back({node, in, std::int8_t(back), node, add, w.owner});
       }
     }
 
+  const Slots slots{stride_, rowStride_};
+  for (LinkNode* l : {static_cast<LinkNode*>(periodic.get()), static_cast<LinkNode*>(bounce.get()),
+                      static_cast<LinkNode*>(slip.get())})
+    l->resolve(slots);
   kinds_.clear();
   kinds_.push_back(std::move(fluid));
   for (auto& z : zouHe)
@@ -229,7 +234,7 @@ void Lattice::rebuildTopology() {
       if (holdsFluidKind(kind_[x]) && !previous.empty() && !holdsFluidKind(previous[x]))
         setNodeState(x, rho0, Vec2::Zero());
     }
-  for (const auto& k : kinds_) k->fill(f_, threads_.get());
+  fill();
 }
 
 }  // namespace sf::lb

@@ -69,14 +69,17 @@ void rebuildUnknowns(const ZouHeNode& z, const Frame& fr, double (&f)[Q]) {
   f[g[8]] = f[g[4]] + shear + jx / 6 - 0.5 * jy;
 }
 
+// The node's inputs in the step's layout (those from outside are stale).
 void pull(const StepContext& ctx, std::int64_t node, double (&f)[Q]) {
-  for (int i = 0; i < Q; ++i)
-    f[i] = ctx.src[i * ctx.stride + node - d2q9::ex[i] - d2q9::ey[i] * ctx.rowStride];
+  const Slots slots = ctx.slots();
+  for (int i = 0; i < Q; ++i) f[i] = ctx.src[slots.input(ctx.from, i, node)];
 }
 
 template <Collision C, ForceScheme S>
 StepStats run(const ZouHeNode& z, const StepContext& ctx) {
   const Frame frame(z, ctx);
+  const Slots slots = ctx.slots();
+  const Layout to = flipped(ctx.from);
   StepStats stats;
   for (const std::int64_t node : z.nodes) {
     double f[Q];
@@ -85,7 +88,8 @@ StepStats run(const ZouHeNode& z, const StepContext& ctx) {
     double u2;
     const double density = collide<C, S>(f, ctx.params, u2);
     stats.merge({density, u2});
-    for (int i = 0; i < Q; ++i) ctx.dst[i * ctx.stride + node] = f[i];
+    // In place: every input was read above, and the outputs go to the same slots.
+    for (int i = 0; i < Q; ++i) ctx.dst[slots.post(to, i, node)] = f[i];
   }
   return stats;
 }

@@ -387,8 +387,12 @@ void Manager::step() {
   coupler_.attachProfile(&profile_);
   if (lattice_) {
     lattice_->attachProfile(&profile_);
+    // Elements can refuse the step after the fluid has made it: the fluid
+    // keeps its state before it to go back to. Alone it streams in place.
+    lattice_->keepPrevious(!assembly_.empty());
     checkCollision();
     const bool couple = coupling::Coupler::needed(*lattice_, assembly_);
+    bool fluidStepped = false;
     try {
       if (couple) {
         coupleBeforeFluid();
@@ -397,9 +401,17 @@ void Manager::step() {
         coupler_.clear(assembly_);
       }
       coupled_ = couple;
+      fluidStepped = true;
       lattice_->step(machStopLimit());
     } catch (const Error& e) {
-      throw stamp(e);
+      const Error stamped = stamp(e);
+      // In place, a step that finds the flow unstable has still been taken.
+      if (fluidStepped && !lattice_->keepsPrevious()) {
+        lattice_->advanceCircles(dt);
+        time_ += dt;
+        ++steps_;
+      }
+      throw stamped;
     }
     if (couple) coupler_.collect(*lattice_, assembly_, coupling_, gravity_);
     if (!machWarned_ && lattice_->lastStepMach() > machWarnLimit()) {

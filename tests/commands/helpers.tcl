@@ -68,7 +68,7 @@ proc sceneState {} {
             simInfo [dict remove [sim info] mlups threads passes]]
     if {![catch {lattice configure} options]} {
         lappend state lattice $options \
-                latticeInfo [dict remove [lattice info] threads] \
+                latticeInfo [dict remove [lattice info] threads memory bytespernode] \
                 obstacles [lattice obstacles]
     }
     return $state

@@ -156,11 +156,9 @@ TEST(LiveChange, SameStepLeavesThePopulations) {
   lb::Lattice lattice(lb::resolve(waveDef(16, 0.8, lb::Collision::trt, lb::ForceScheme::guo)));
   startWave(lattice);
   runTo(lattice, 0, 0.5);
-  std::vector<double> before(lattice.populationData(),
-                             lattice.populationData() + lattice.populationCount());
+  const std::vector<double> before = lattice.populations();
   lattice.reconfigure(lb::resolve(lattice.params().def));
-  EXPECT_EQ(0,
-            std::memcmp(before.data(), lattice.populationData(), before.size() * sizeof(double)));
+  EXPECT_EQ(lattice.populations(), before);
 }
 
 }  // namespace

@@ -78,8 +78,7 @@ struct StateHash {
 };
 
 void hashLattice(const lb::Lattice& l, StateHash& s) {
-  s.part("lattice populations",
-         [&](Fnv& f) { f.bytes(l.populationData(), l.populationCount() * sizeof(double)); });
+  s.part("lattice populations", [&](Fnv& f) { f.add(l.populations()); });
   s.part("lattice covered cells", [&](Fnv& f) {
     for (const lb::CoveredCell& c : l.coveredCells()) {
       f.add(std::int64_t(c.node)), f.add(std::int64_t(c.interior));

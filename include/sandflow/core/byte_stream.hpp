@@ -92,6 +92,11 @@ class ByteReader {
     std::memcpy(out, data_ + at_, bytes);
     at_ += bytes;
   }
+  // Passes over bytes an older format holds that nothing reads now.
+  void skip(std::size_t bytes, const char* what) {
+    if (bytes > size_ - at_) fail(std::string("it ends inside ") + what);
+    at_ += bytes;
+  }
   // A count of items of `itemBytes` each: one that cannot fit in what is left
   // is refused before anything is allocated.
   std::size_t count(std::size_t itemBytes, const char* what) {

@@ -14,7 +14,7 @@
 namespace sf::io {
 
 // 2: each warning keeps its remedy (sf::Remedy) beside its sentence.
-inline constexpr int kCheckpointVersion = 3;
+inline constexpr int kCheckpointVersion = 4;
 
 void saveCheckpoint(const std::string& path, const sim::Manager& manager,
                     const std::string& session);

@@ -72,10 +72,11 @@ class Lattice {
   void reconfigure(const ResolvedLattice& params);
 
   // One step. On NaN or a Mach number above `machLimit` it throws sf::Error
-  // (code "UNSTABLE ...") naming the node, and keeps the state before the step.
+  // (code "UNSTABLE ...") naming the node; with keepPrevious the state before
+  // the step stays, else (in place) the step has been taken.
   StepStats step(double machLimit = 0.3);
   // Returns to the state before the last step (once; until anything else changes
-  // the populations), for a coupled step whose solid part fails.
+  // the populations; with keepPrevious), for a coupled step whose solid part fails.
   void undoStep();
   // The profile its steps record into (Stage::lattice*): the owner's, once
   // attached, else its own.
@@ -143,11 +144,20 @@ class Lattice {
   // Sets every fluid node to the equilibrium of the given density and velocity.
   void initialize(const std::function<void(const Vec2& x, double& rho, Vec2& u)>& field);
 
-  // Raw populations (post-collision, lattice units), for tests and checkpoints.
+  // The post-collision populations f*_d (lattice units) of node (i, j), and of
+  // every node, [(d * ny + j) * nx + i], 0 where no fluid is: the same
+  // whichever layout the array is in (tests, checkpoints, hashes).
   double population(int direction, int i, int j) const;
-  const double* populationData() const { return f_; }
-  std::size_t populationCount() const { return 9 * stride_; }
+  std::vector<double> populations() const;
+  // Bytes held: the population array (two while keepPrevious), node kinds.
   std::size_t memoryBytes() const;
+  // Whether a step writes another array and keeps the state before it, so
+  // that undoStep can go back and a refused step changes nothing (the
+  // Manager asks for it while elements can refuse a step after the fluid's).
+  // Else the step streams in place: half the memory, no line read for
+  // ownership, and a step that finds the flow unstable has still been taken.
+  void keepPrevious(bool keep);
+  bool keepsPrevious() const { return spare_ != nullptr; }
   const std::vector<std::unique_ptr<Node>>& kinds() const { return kinds_; }
 
   // The whole state, bit for bit (checkpoints): definition, obstacles, both
@@ -181,16 +191,25 @@ class Lattice {
   Vec2 latticeVelocity(std::int64_t node) const;
   // Velocity (lattice units) from a node's moments: the forcing's half step out.
   Vec2 velocityFromMoments(double rho, double jx, double jy) const;
-  // Density and first moment of one node of the population array `f`.
-  void moments(const double* f, std::int64_t node, double& rho, double& jx,
-               double& jy) const;  // pre-collision velocity, lattice units
-  [[noreturn]] void reportInstability(const StepStats& stats, double machLimit) const;
+  // Density and first moment of node x's post-collision populations in the
+  // array f of the given layout.
+  void moments(const double* f, Layout layout, std::int64_t node, double& rho, double& jx,
+               double& jy) const;
+  // Throws the step's instability, naming the worst node of the state it made.
+  [[noreturn]] void reportInstability(const StepStats& stats, double machLimit, const double* f,
+                                      Layout layout) const;
+  Slots slots() const { return {stride_, rowStride_}; }
+  std::size_t populationSlots() const { return 9 * static_cast<std::size_t>(stride_); }
+  // Writes the links' slots for the next step from the array's layout.
+  void fill();
 
   ResolvedLattice p_;
   std::ptrdiff_t rowStride_ = 0, stride_ = 0;
-  double* f_ = nullptr;         // current populations, 9 * stride_
-  double* g_ = nullptr;         // next populations
-  std::vector<NodeKind> kind_;  // per padded node
+  double* f_ = nullptr;      // the populations, 9 * stride_, in layout_ (node.hpp)
+  double* spare_ = nullptr;  // the state before the last step, with keepPrevious
+  Layout layout_ = Layout::collided;
+  std::vector<double> coveredBuffer_;  // a step's covered cells' outputs, in place
+  std::vector<NodeKind> kind_;         // per padded node
   std::vector<std::unique_ptr<Node>> kinds_;
   std::vector<RectObstacle> obstacles_;
   std::vector<CircleObstacle> circles_;

@@ -58,8 +58,10 @@ struct ResolvedLattice {
   double forceToLattice(double f) const { return f * dt * dt / h; }
 };
 
-// Bytes of memory per node that a lattice of this kind uses.
-inline constexpr double bytesPerNode = 2.0 * 9 * sizeof(double) + 1;
+// Bytes of memory per node that a lattice uses: one population array streamed
+// in place and a node kind (twice the populations while it keeps its state
+// before each step, Lattice::keepPrevious).
+inline constexpr double bytesPerNode = 9.0 * sizeof(double) + 1;
 
 // Checks the definition and derives nx, ny, h, dt, tau and viscosity. Throws
 // sf::Error with the numbers on any inconsistency or instability. Exactly two of
