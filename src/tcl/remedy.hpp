@@ -8,6 +8,6 @@
 namespace sf::tcl {
 
 // `text` with the remedy's advice appended (unchanged for Remedy::none).
-std::string withRemedy(const std::string& text, Remedy remedy);
+std::string withRemedy(const std::string& text, const Advice& advice);
 
 }  // namespace sf::tcl

@@ -20,19 +20,30 @@ enum class Remedy : std::uint8_t {
   setTimestep,          // the scene has no timestep of its own
   implicitCoupling,     // grains too light for the explicit coupling
   trtCollision,         // BGK's bounce-back walls slip at high tau
+  elementSubsteps,      // the element step is over the critical one: split the step
 };
-inline constexpr int kRemedyCount = int(Remedy::trtCollision) + 1;  // the last, plus one
+inline constexpr int kRemedyCount = int(Remedy::elementSubsteps) + 1;  // the last, plus one
+
+// A remedy with the whole number it calls for, where it calls for one (the
+// element substeps per step that bring each under the critical step).
+struct Advice {
+  Remedy remedy = Remedy::none;
+  long long count = 0;
+  Advice(Remedy r = Remedy::none, long long n = 0) : remedy(r), count(n) {}  // NOLINT: implicit
+  friend bool operator==(const Advice&, const Advice&) = default;
+};
 
 class Error : public std::runtime_error {
  public:
-  Error(std::string code, const std::string& message, Remedy remedy = Remedy::none)
+  Error(std::string code, const std::string& message, Advice remedy = {})
       : std::runtime_error(message), code_(std::move(code)), remedy_(remedy) {}
   const std::string& code() const { return code_; }
-  Remedy remedy() const { return remedy_; }
+  // What a re-wrapped error passes on whole (Error(code, more + what(), remedy())).
+  const Advice& remedy() const { return remedy_; }
 
  private:
   std::string code_;
-  Remedy remedy_;
+  Advice remedy_;
 };
 
 // Formats a double the way a user would type it back (shortest round-trip form).
