@@ -62,6 +62,13 @@ std::array<double, 2> finiteRange(const std::vector<double>& v) {
   return {lo, hi};
 }
 
+// Below a billionth of the lattice speed h/dt the fluid is still: at rest it
+// holds rounding noise (1e-17 of h/dt) in random directions, which no scale
+// should blow up into colours or arrows.
+double stillSpeed(const lb::Lattice& lattice) {
+  return 1e-9 * lattice.params().h / lattice.params().dt;
+}
+
 }  // namespace
 
 FieldValues sampleField(const lb::Lattice& lattice, Field field,
@@ -152,13 +159,10 @@ FieldValues sampleField(const lb::Lattice& lattice, const std::vector<float>& ep
       f.map.lo = -d;
       f.map.hi = d;
     } else if (field == Field::velocity) {
-      // Fluid at rest holds rounding noise (1e-17 of the lattice speed):
-      // scaled to it, still fluid would show the map's top colour. Below a
-      // billionth of h/dt the scale is Mach 0.01, and the fluid reads as
-      // still.
-      const double c = lattice.params().h / lattice.params().dt;
+      // Still fluid, scaled to its rounding noise, would show the map's top
+      // colour: its scale is Mach 0.01, and it reads as still.
       f.map.lo = 0;
-      f.map.hi = hi < 1e-9 * c ? 0.01 * c : hi;
+      f.map.hi = hi < stillSpeed(lattice) ? 0.01 * lattice.params().h / lattice.params().dt : hi;
     } else {
       f.map.lo = lo;
       f.map.hi = hi;
@@ -327,7 +331,7 @@ double maxSpeed(const lb::Lattice& lattice) {
 }  // namespace
 
 void addArrows(const lb::Lattice& lattice, const std::vector<float>& eps, const WorldMap& world,
-               const Window& shown, float spacing, float scale, Rgba colour,
+               const Window& shown, float spacing, float scale, Rgba colour, double fullSpeed,
                std::vector<Stroke>& out) {
   const auto& p = lattice.params();
   const float cell = world.length(p.h);
@@ -346,8 +350,8 @@ void addArrows(const lb::Lattice& lattice, const std::vector<float>& eps, const 
   };
   const int i0 = first(w.x0, p.def.origin.x(), p.nx), i1 = last(w.x1, p.def.origin.x(), p.nx);
   const int j0 = first(w.y0, p.def.origin.y(), p.ny), j1 = last(w.y1, p.def.origin.y(), p.ny);
-  // The arrows' nodes and velocities first: the longest arrow drawn is 90% of
-  // the grid spacing.
+  // The arrows' nodes and velocities first: without a given scale, the
+  // fastest arrow is the longest, 90% of the grid spacing.
   struct Site {
     Point centre;
     Vec2 u;
@@ -361,12 +365,13 @@ void addArrows(const lb::Lattice& lattice, const std::vector<float>& eps, const 
       sites.push_back({world(lattice.position(i, j)), lattice.velocity(i, j)});
       umax = std::max(umax, sites.back().u.norm());
     }
-  if (!(umax > 0)) return;
+  const double full = fullSpeed > 0 ? fullSpeed : umax;
+  if (!(umax >= stillSpeed(lattice)) || !std::isfinite(full)) return;
   const float longest = 0.9f * float(stride) * cell;
   for (const Site& site : sites) {
     const double speed = site.u.norm();
-    if (speed < 1e-3 * umax) continue;
-    const float len = float(speed / umax) * longest;
+    const float len = float(std::min(1.0, speed / full)) * longest;
+    if (!(len >= scale)) continue;  // shorter than a pixel (or still): no arrow
     const Vec2 d = site.u / speed;
     const Point c = site.centre;
     const Point tip{c.x + 0.5f * len * float(d.x()), c.y + 0.5f * len * float(d.y())};
@@ -385,7 +390,7 @@ void addStreamlines(const lb::Lattice& lattice, const std::vector<float>& eps,
                     const WorldMap& world, const Window& shown, float spacing, float scale,
                     Rgba colour, std::vector<Stroke>& out) {
   const double umax = maxSpeed(lattice);
-  if (!(umax > 0)) return;
+  if (!(umax >= stillSpeed(lattice))) return;  // still fluid: its noise has no lines
   const double h = lattice.params().h;
   // Evenly spaced lines (after Jobard & Lefer): a line stops where it comes
   // closer than about `separation` to another one, and a seed starts only in

@@ -360,6 +360,7 @@ DrawList build(const sim::Manager& m, const ViewOptions& v, int scale, bool fill
                              list.fieldStrokes);
     if (v.vectors)
       detail::addArrows(m.lattice(), eps, world, shown, kArrowSpacing * f, f, ink,
+                        field == Field::velocity && v.range ? (*v.range)[1] : 0.0,
                         list.fieldStrokes);
     // Outlines only where the picture is about the cells under them.
     const bool cells = field == Field::nodes || field == Field::solid;

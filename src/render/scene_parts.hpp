@@ -67,9 +67,13 @@ Sprite fieldSprite(const lb::Lattice& lattice, const std::vector<float>& eps, Fi
                    const FieldValues* values, const WorldMap& world);
 // Velocity arrows on a grid about `spacing` pixels apart, and streamlines,
 // over the part of the lattice in the window `shown`; neither enters cells more
-// than half covered by a solid.
+// than half covered by a solid. An arrow's length is its speed over
+// `fullSpeed` (the speed of an arrow 90% of the spacing long, clamped there:
+// a fixed range's top) or, when that is not positive, over the fastest
+// arrow's; still fluid (below a billionth of h/dt) draws none, nor does an
+// arrow shorter than a pixel.
 void addArrows(const lb::Lattice& lattice, const std::vector<float>& eps, const WorldMap& world,
-               const Window& shown, float spacing, float scale, Rgba colour,
+               const Window& shown, float spacing, float scale, Rgba colour, double fullSpeed,
                std::vector<Stroke>& out);
 void addStreamlines(const lb::Lattice& lattice, const std::vector<float>& eps,
                     const WorldMap& world, const Window& shown, float spacing, float scale,

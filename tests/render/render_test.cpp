@@ -228,6 +228,55 @@ TEST(SceneBuilder, RefusesWhatShowsNothing) {
   EXPECT_THROW(checkOptions(v), Error);
 }
 
+// Lattice speed h/dt of a scene.
+double latticeSpeed(const sim::Manager& m) {
+  return m.lattice().params().h / m.lattice().params().dt;
+}
+
+TEST(SceneBuilder, StillFluidDrawsNoArrowsAndNoStreamlines) {
+  // Fluid at rest holds rounding noise (about 1e-17 of h/dt): it has no
+  // direction to show.
+  sim::Manager m;
+  m.createLattice(test::periodicSquare(1.0, 32, 0.01));
+  const double c = latticeSpeed(m);
+  m.lattice().initialize([&](const Vec2&, double& rho, Vec2& u) {
+    rho = 1;
+    u = Vec2(2e-17 * c, 2e-17 * c);
+  });
+  ViewOptions v;
+  v.vectors = v.streamlines = true;
+  for (Field field : {Field::velocity, Field::none}) {
+    v.field = field;
+    EXPECT_TRUE(buildScene(m, v, 1).fieldStrokes.empty()) << fieldNames[int(field)];
+  }
+}
+
+TEST(SceneBuilder, ArrowsAreAsLongAsTheFlowIsFast) {
+  // Under a fixed speed range, an arrow's length is its speed over the
+  // range's top (90% of the grid spacing there, and no longer above it).
+  ViewOptions v;
+  v.vectors = true;
+  auto shaft = [&](double speed) {
+    sim::Manager m;
+    m.createLattice(test::periodicSquare(1.0, 40, 0.01));
+    const double c = latticeSpeed(m);
+    v.range = std::array{0.0, 0.05 * c};
+    m.lattice().initialize([&](const Vec2&, double& rho, Vec2& u) {
+      rho = 1;
+      u = Vec2(speed * c, 0.0);
+    });
+    const DrawList list = buildScene(m, v, 1);
+    EXPECT_FALSE(list.fieldStrokes.empty()) << speed;
+    if (list.fieldStrokes.empty()) return 0.0f;
+    return list.fieldStrokes[0].b.x - list.fieldStrokes[0].a.x;
+  };
+  const float slow = shaft(0.01), fast = shaft(0.02), top = shaft(0.05), above = shaft(0.1);
+  EXPECT_NEAR(fast / slow, 2.0, 1e-4);
+  EXPECT_NEAR(top / slow, 5.0, 1e-4);
+  EXPECT_FLOAT_EQ(above, top);
+  EXPECT_GT(top, 10.0f);  // 90% of a grid spacing of about 22 pixels
+}
+
 TEST(Text, LabelsHaveInkAndWidth) {
   TextRenderer& text = sharedTextRenderer();
   EXPECT_GT(text.width("0.192", 13), 20.0f);
