@@ -254,6 +254,41 @@ int RunTick(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
   return TCL_OK;
 }
 
+// ::sf::gui::runsample ?script ?K?? : the script `run` evaluates after every
+// K-th step of a run, counted from its start, whatever the clock (the live
+// plot's samples); an empty script or K 0 removes it. With no arguments: the
+// current {script K}.
+int RunSample(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  Session& s = sessionOf(data);
+  if (objc > 3) {
+    Tcl_WrongNumArgs(interp, 1, objv, "?script ?K??");
+    return TCL_ERROR;
+  }
+  if (objc == 1) {
+    Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
+    Tcl_ListObjAppendElement(nullptr, list, s.runSample ? s.runSample : Tcl_NewObj());
+    Tcl_ListObjAppendElement(nullptr, list, Tcl_NewWideIntObj(s.runSampleEvery));
+    Tcl_SetObjResult(interp, list);
+    return TCL_OK;
+  }
+  Tcl_WideInt every = s.runSampleEvery;
+  if (objc == 3) {
+    if (Tcl_GetWideIntFromObj(interp, objv[2], &every) != TCL_OK) return TCL_ERROR;
+    if (every < 0)
+      return fail(interp, "VALUE EVERY", "K must be >= 0, got " + std::to_string(every));
+  }
+  int length = 0;
+  Tcl_GetStringFromObj(objv[1], &length);
+  if (s.runSample) Tcl_DecrRefCount(s.runSample);
+  s.runSample = nullptr;
+  if (length > 0) {
+    s.runSample = Tcl_DuplicateObj(objv[1]);
+    Tcl_IncrRefCount(s.runSample);
+  }
+  s.runSampleEvery = every;
+  return TCL_OK;
+}
+
 // ::sf::gui::progress -> {done total run}: steps of the run in progress (or the
 // last), and how many runs have started.
 int Progress(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
@@ -288,6 +323,7 @@ void registerGuiCommands(Tcl_Interp* interp, Session* session) {
   Tcl_CreateObjCommand(interp, "::sf::gui::region", Region, session, nullptr);
   Tcl_CreateObjCommand(interp, "::sf::gui::elements", Elements, session, nullptr);
   Tcl_CreateObjCommand(interp, "::sf::gui::runtick", RunTick, session, nullptr);
+  Tcl_CreateObjCommand(interp, "::sf::gui::runsample", RunSample, session, nullptr);
   Tcl_CreateObjCommand(interp, "::sf::gui::running", Running, session, nullptr);
   Tcl_CreateObjCommand(interp, "::sf::gui::progress", Progress, session, nullptr);
 }

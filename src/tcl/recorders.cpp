@@ -49,6 +49,7 @@ std::string Recorder::samePath(const std::string& path) {
 Session::~Session() {
   for (auto& r : recorders) finishQuietly(*r);
   if (runTick) Tcl_DecrRefCount(runTick);
+  if (runSample) Tcl_DecrRefCount(runSample);
 }
 
 bool recording(const Session& s, const std::string& path) {

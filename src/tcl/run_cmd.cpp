@@ -63,6 +63,17 @@ int tick(Session& s) {
   return code;
 }
 
+// Evaluates the live plot's sample script (the workbench's ::sf::gui::runsample).
+int sample(Session& s) {
+  const OwnTime timed{s, Stage::tick};
+  Tcl_Obj* script = s.runSample;
+  Tcl_IncrRefCount(script);  // the script may replace itself
+  const int code = Tcl_EvalObjEx(s.interp, script, TCL_EVAL_GLOBAL);
+  Tcl_DecrRefCount(script);
+  if (code == TCL_ERROR) Tcl_AddErrorInfo(s.interp, "\n    (in the workbench's run sample)");
+  return code;
+}
+
 // What a run is asked to do: N steps, and every K steps the -every script or
 // (a run with no N) a snapshot named after the step.
 struct RunRequest {
@@ -196,6 +207,10 @@ int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     if (s.manager.hasLattice())  // the rate so far, so that -every scripts can report it
       s.manager.setMlups(double(s.manager.lattice().nodes()) * double(done + 1) / computeSeconds /
                          1e6);
+    if (s.runSample && s.runSampleEvery > 0 && (done + 1) % s.runSampleEvery == 0) {
+      const int code = sample(s);
+      if (code != TCL_OK) return code;
+    }
     if (r.every > 0 && (done + 1) % r.every == 0) {
       const int code = everyK(s, r);
       if (code == TCL_BREAK) {

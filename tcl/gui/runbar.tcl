@@ -1,7 +1,7 @@
 # Run controls and the status bar. A run is the `run` command, whoever started
 # it (the Run button, the console, a script): the workbench hooks a tick into
 # it (::sf::gui::runtick) that serves Tk's events at least every 50 ms, redraws
-# the view at the chosen frame rate and feeds the live plots, and that breaks
+# the view at the chosen frame rate and updates the status bar, and that breaks
 # the run when Pause was pressed (run then returns the step it reached).
 
 namespace eval ::sf::gui::runbar {
@@ -36,7 +36,7 @@ proc ::sf::gui::runbar::create {f} {
     ttk::label $f.lspf -text "or every"
     ttk::spinbox $f.spf -from 0 -to 1000000 -width 6 -textvariable ::sf::gui::runbar::stepsPerFrame
     ttk::label $f.lspf2 -text "steps" 
-    ttk::progressbar $f.progress -length 160 -variable ::sf::gui::runbar::progress -maximum 1.0
+    ttk::progressbar $f.progress -length 100 -variable ::sf::gui::runbar::progress -maximum 1.0
     pack $f.run $f.pause $f.step $f.reset -side left -padx 2
     pack $f.lsteps $f.steps $f.lfps $f.fps $f.lspf $f.spf $f.lspf2 -side left -padx {8 2}
     pack $f.progress -side right -padx 4
@@ -148,7 +148,6 @@ proc ::sf::gui::runbar::tick {} {
         # `sim info` scans the lattice (Mach, mass): once a frame, shared.
         set info [sim info]
         ::sf::gui::runbar::update $info
-        if {[llength [info commands ::sf::gui::plots::sample]]} { ::sf::gui::plots::sample $info }
         # The frame rate asked for, unless frames cost more than the budget's
         # share of the run: a large lattice redraws less often, never slowing
         # the run by more than the budget. The next frame is timed from this

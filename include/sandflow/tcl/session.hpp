@@ -24,6 +24,10 @@ struct Session {
   // and redraws; `break` from it pauses the run.
   Tcl_Obj* runTick = nullptr;
   int runTickMs = 50;
+  // And its live plot's (::sf::gui::runsample): a script evaluated after every
+  // runSampleEvery-th step of a run, counted from the run's start.
+  Tcl_Obj* runSample = nullptr;
+  long long runSampleEvery = 0;
   bool running = false;                 // a run is in progress
   bool inTick = false;                  // its tick is serving the GUI's events
   long long runDone = 0, runTotal = 0;  // the run's progress, for the GUI's bar
