@@ -285,7 +285,7 @@ int main(int argc, char** argv) {
   // smaller radius at N = 100,000, past sandflow's default safety limit of 0.5
   // (LAMMPS has none). The settled bed is what is timed, so the limit is
   // raised for the bed; the largest overlap reached is printed.
-  a.maxOverlap = 1.0;
+  a.setMaxOverlap(1.0);
   Material m{"glass"};
   m.density = 2650;
   m.kn = m.ks = 1e5;

@@ -163,14 +163,14 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
   t0 = profile.lap(Stage::demSums, t0);
   // Each contact's damping and normal-force mode for the step (law_columns.cpp).
   contacts_.prepareDamping(b, materials_, generation_, dt);
-  const std::size_t bad = contacts_.evaluate(b, vel, omega, dt, maxOverlap, threads());
+  const std::size_t bad = contacts_.evaluate(b, vel, omega, dt, maxOverlap_, threads());
   t0 = profile.lap(Stage::demContacts, t0);
   const ContactList& l = contacts_.list();
   if (bad < l.size())  // the history stays as it was (the step does not commit)
     throw Error("UNSTABLE OVERLAP",
                 "elements " + std::to_string(l.idA[bad]) + " and " + std::to_string(l.idB[bad]) +
                     " overlap by " + formatNumber(l.overlap[bad]) + ", more than " +
-                    formatNumber(maxOverlap) +
+                    formatNumber(maxOverlap_) +
                     " of the smaller one's size: reduce the timestep or stiffen the material");
 
   scratchTouch_.assign(n, 0);  // for checkSpeeds
@@ -277,6 +277,14 @@ void Assembly::commitStep() {
 // The stages: pre-force integration, pair upkeep, forces (whose failure puts
 // everything back), the checks, the commit, the plates' servo, post-force
 // integration, the clock and the sources' clones.
+void Assembly::setMaxOverlap(double share) {
+  if (!(share > 0 && share <= kMaxOverlapLimit))
+    throw Error("VALUE MAXOVERLAP",
+                "the overlap limit must be > 0 and <= " + formatNumber(kMaxOverlapLimit) +
+                    ", got " + formatNumber(share));
+  maxOverlap_ = share;
+}
+
 void Assembly::step(double dt, const Vec2& gravity) {
   if (empty()) return;
   Profile& profile = profile_.get();

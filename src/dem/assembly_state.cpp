@@ -38,7 +38,7 @@ void Assembly::saveState(ByteWriter& out) const {
   for (int i = 0; i < materials_.size(); ++i) putMaterial(out, materials_[i]);
 
   out.tag("ELEM");
-  out.put(std::int32_t(integrator)), out.put(maxOverlap), out.put(vectorPass);
+  out.put(std::int32_t(integrator)), out.put(maxOverlap_), out.put(vectorPass);
   bodies_.save(out);
   contacts_.save(out, materials_, generation_);
   bonds_.save(out);
@@ -61,8 +61,12 @@ void Assembly::loadState(ByteReader& in) {
   const auto integ = in.get<std::int32_t>("integrator");
   if (integ < 0 || integ > 2) ByteReader::fail("it holds an unknown integrator");
   integrator = Integrator(integ);
-  maxOverlap = in.get<double>("settings");
-  if (!(maxOverlap > 0 && maxOverlap <= 1)) ByteReader::fail("it holds a bad overlap limit");
+  const double overlap = in.get<double>("settings");
+  // The limit the setting takes (it refused anything above 1 here before,
+  // while sim configure took up to 2: such a scene saved a file it could not load).
+  if (!(overlap > 0 && overlap <= kMaxOverlapLimit))
+    ByteReader::fail("it holds a bad overlap limit");
+  maxOverlap_ = overlap;
   vectorPass = in.getBool("settings");
   Bodies& b = bodies_;
   b.load(in);

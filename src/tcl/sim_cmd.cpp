@@ -30,7 +30,7 @@ struct SimStage {
 
   static SimStage of(const sim::Manager& m) {
     return {m.timestep(), m.threads(),        int(m.assembly().integrator),
-            m.substeps(), m.gravity(),        m.assembly().maxOverlap,
+            m.substeps(), m.gravity(),        m.assembly().maxOverlap(),
             m.coupling(), matchingAccuracy(m)};
   }
 };
@@ -78,7 +78,7 @@ const OptionTable<SimStage> kOptions{
          "a contact overlapping more than f of the smaller element stops the run",
          ValueKind::real,
          "",
-         {.min = 0, .max = 2, .minOpen = true}},
+         {.min = 0, .max = dem::Assembly::kMaxOverlapLimit, .minOpen = true}},
         [](const SimStage& s) { return realValue(s.maxOverlap); },
         [](SimStage& s, const OptionValue& v) { s.maxOverlap = v.real; }},
     Row{{"-solidratio",
@@ -230,7 +230,7 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
     if (given[kThreads]) m.setThreads(stage.threads);
     if (given[kGravity]) m.setGravity(stage.gravity);
     m.assembly().integrator = static_cast<dem::Integrator>(stage.integrator);
-    m.assembly().maxOverlap = stage.maxOverlap;
+    m.assembly().setMaxOverlap(stage.maxOverlap);
     return TCL_OK;
   });
   flushWarnings(s);  // a preset's lattice warned of at once

@@ -377,7 +377,7 @@ TEST(Coupling, FailedElementStepTakesTheFluidBackToo) {
   sim::Manager m;
   m.createLattice(test::periodicSquare(1.0, 32, 0.01));
   const int mat = test::softMaterial(m, 2.0);
-  m.assembly().maxOverlap = 0.05;
+  m.assembly().setMaxOverlap(0.05);
   test::addDisc(m, mat, Vec2(0.4, 0.5), 0.1, Vec2(0.01, 0));
   test::addDisc(m, mat, Vec2(0.59, 0.5), 0.1);  // overlapping by 10%: refused
   const std::vector<double> before = m.lattice().populations();

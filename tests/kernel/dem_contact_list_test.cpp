@@ -104,7 +104,7 @@ TEST(ContactList, StepThatStopsKeepsTheContactHistory) {
   for (int s = 0; s < 50; ++s) a.step(2e-6, Vec2::Zero());
   const std::vector<Contact> before = a.contacts();
   const std::vector<Vec2> x = a.bodies().x;
-  a.maxOverlap = 1e-6;  // every touching contact is now too deep
+  a.setMaxOverlap(1e-6);  // every touching contact is now too deep
   EXPECT_THROW(a.step(2e-6, Vec2::Zero()), Error);
   ASSERT_EQ(a.contacts().size(), before.size());
   for (std::size_t k = 0; k < before.size(); ++k) {
@@ -117,7 +117,7 @@ TEST(ContactList, StepThatStopsKeepsTheContactHistory) {
   Assembly b;
   cluster(b, 100, 3);
   for (int s = 0; s < 51; ++s) b.step(2e-6, Vec2::Zero());
-  a.maxOverlap = 0.5;
+  a.setMaxOverlap(0.5);
   a.step(2e-6, Vec2::Zero());
   EXPECT_TRUE(sameBits(a.bodies().x, b.bodies().x));
 }

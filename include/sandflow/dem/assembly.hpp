@@ -92,7 +92,11 @@ class Assembly {
   };
   TimestepLimits timestepLimits() const;  // kept like criticalTimestep
   Integrator integrator = Integrator::central;
-  double maxOverlap = 0.5;
+  // A touching contact deeper than this share of the smaller element's size
+  // stops the step: (0, kMaxOverlapLimit]. Refused outside it (VALUE MAXOVERLAP).
+  static constexpr double kMaxOverlapLimit = 2.0;
+  double maxOverlap() const { return maxOverlap_; }
+  void setMaxOverlap(double share);
   // Its own thread count, or its owner's once attached (sf::ThreadCount).
   void setThreads(int threads) { threads_.set(threads); }
   void attachThreads(const int* count) { threads_.attach(count); }
@@ -186,6 +190,7 @@ class Assembly {
   std::vector<Vec2> spareForce_;
   std::vector<double> spareTorque_;
   double time_ = 0;
+  double maxOverlap_ = 0.5;
   double lastStep_ = 0;  // of the last step, 0 before the first (detail::changeStep)
   ThreadCount threads_;
 };
