@@ -27,9 +27,6 @@ constexpr std::string_view kCellReynoldsMarker = "cell Reynolds number";
 constexpr std::string_view kDemStepMarker = "over its accurate step";
 constexpr std::string_view kOutrunMarker = "faster than anything that drives it";
 
-// The most element substeps one step may take.
-constexpr long long kMaxSubsteps = 1000;
-
 }  // namespace
 
 // The default thread count honours OMP_NUM_THREADS (else the machine's cores).

@@ -59,7 +59,7 @@ void Manager::loadState(ByteReader& in) {
   attachParts();
   assembly_.loadState(in);
   // As it was, unchecked against the elements' critical step: the next step checks.
-  if (substeps < 1 || substeps > 1000) ByteReader::fail("it holds a bad substep count");
+  if (substeps < 1 || substeps > kMaxSubsteps) ByteReader::fail("it holds a bad substep count");
   substeps_ = substeps;
 }
 

@@ -214,15 +214,8 @@ int LatticeConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
       return TCL_ERROR;
     }
     std::vector<bool> given;
-    const double density = stage.def.density;
     if (!kOptions.apply(interp, objc, objv, 1, stage, &given)) return TCL_ERROR;
-    LatticeDef& def = stage.def;
-    if (def.density != density) {  // the kernel refuses it too, naming no option
-      fail(interp, "VALUE DENSITY",
-           "-density is the initial state: it cannot change on a live lattice");
-      noteOptionOnce(interp, "-density");
-      return TCL_ERROR;
-    }
+    LatticeDef& def = stage.def;  // (a new density: the kernel refuses it)
     // Keep the timestep unless tau is what changed.
     if (given[kViscosity] && !given[kTau]) def.tau.reset();
     if (given[kTau]) def.timestep.reset();

@@ -99,7 +99,7 @@ const OptionTable<SimStage> kOptions{
          "element steps per fluid step, each dt/n under the step's fluid force",
          ValueKind::integer,
          "",
-         {.min = 1, .max = 1000}},
+         {.min = 1, .max = sim::Manager::kMaxSubsteps}},
         [](const SimStage& s) { return integerValue(s.substeps); },
         [](SimStage& s, const OptionValue& v) { s.substeps = v.integer; }},
     Row{{"-buoyancy", "0|1", "static buoyancy -rho_f A g on elements in the fluid",

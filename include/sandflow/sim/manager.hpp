@@ -55,6 +55,9 @@ class Manager {
   // changes, and the lattice converts its flow once (Lattice::reconfigure).
   void configureStep(const std::optional<lb::LatticeDef>& def, std::optional<double> dt,
                      std::optional<int> substeps);
+  // The most element substeps one step may take (sim configure -substeps and
+  // a checkpoint take the same).
+  static constexpr int kMaxSubsteps = 1000;
   // The thread counts a step may use (sim configure -threads checks the same).
   // The one count of the scene: its lattice, coupler and elements read it.
   static constexpr int kMaxThreads = 1024;
