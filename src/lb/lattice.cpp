@@ -8,6 +8,7 @@
 
 #include "sandflow/core/assert.hpp"
 #include "sandflow/core/error.hpp"
+#include "sandflow/core/memory.hpp"
 
 namespace sf::lb {
 namespace {
@@ -58,6 +59,9 @@ void Lattice::keepPrevious(bool keep) {
     spare_ = nullptr;
     return;
   }
+  checkMemory(2.0 * populationSlots() * sizeof(double),
+              "a " + std::to_string(p_.nx) + " x " + std::to_string(p_.ny) +
+                  " lattice keeping its state before each step (with elements)");
   spare_ = allocatePopulations(populationSlots());
   // The slots no step writes (fixed solids' insides) as they are in f_.
   std::copy(f_, f_ + populationSlots(), spare_);
