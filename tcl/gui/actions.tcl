@@ -7,19 +7,40 @@ namespace eval ::sf::gui {
     variable redoStack {}
     variable selection {}   ;# element ids
     variable highlight #1f6feb
+    # Commands (actions and typed ones) numbered as they start; `settled` is
+    # the number of the latest that succeeded. A message, or a refused
+    # property, from before it has had its answer.
+    variable started 0
+    variable settled 0
 }
 
-# Runs `cmd` as typed: echoed, evaluated at global level. On success the pair
-# (cmd, undo) joins the undo history (an empty undo: not undoable) and the
-# result is returned; on failure the error is shown and raised, and nothing is
-# recorded (the command itself left the scene unchanged).
+# A command starts -> its number.
+proc ::sf::gui::begin {} {
+    variable started
+    incr started
+}
+
+# The command numbered `serial` succeeded: the status bar's older message goes.
+proc ::sf::gui::succeeded {serial} {
+    variable settled
+    variable messageAt
+    if {$serial > $settled} { set settled $serial }
+    if {[info exists messageAt] && $messageAt < $serial} { status "" }
+}
+
+# Runs `cmd` as typed: echoed, evaluated at global level, its result shown
+# as a typed one's is. On success the pair (cmd, undo) joins the undo history
+# (an empty undo: not undoable) and the result is returned; on failure the
+# error is shown and raised, and nothing is recorded (the command itself left
+# the scene unchanged).
 proc ::sf::gui::do {cmd {undo ""} {label ""}} {
     variable undoStack
     variable redoStack
     echo $cmd
+    set serial [begin]
     set code [catch {uplevel #0 $cmd} result options]
     if {$code == 1} {
-        showError $result
+        showError $result $options
         changed
         return -options $options $result
     }
@@ -27,6 +48,10 @@ proc ::sf::gui::do {cmd {undo ""} {label ""}} {
         if {$label eq ""} { set label [lrange $cmd 0 1] }
         lappend undoStack [list $label $cmd $undo]
         set redoStack {}
+    }
+    succeeded $serial
+    if {$result ne "" && [info exists ::sf::gui::W(console)]} {
+        console::write $::sf::gui::W(console) $result\n result
     }
     changed
     return $result
@@ -38,11 +63,12 @@ proc ::sf::gui::doAll {label pairs} {
     variable undoStack
     variable redoStack
     set done {}
+    set serial [begin]
     foreach pair $pairs {
         lassign $pair cmd undo
         echo $cmd
-        if {[catch {uplevel #0 $cmd} result]} {
-            showError $result
+        if {[catch {uplevel #0 $cmd} result options]} {
+            showError $result $options
             # What ran so far is taken back: the action is all or nothing.
             foreach d [lreverse $done] { catch {uplevel #0 [lindex $d 1]} }
             changed
@@ -55,6 +81,7 @@ proc ::sf::gui::doAll {label pairs} {
                                [join [lreverse [lmap d $done {lindex $d 1}]] \n]]
         set redoStack {}
     }
+    succeeded $serial
     changed
 }
 
@@ -70,11 +97,13 @@ proc ::sf::gui::replay {fromName toName field verb} {
     set label [lindex $entry 0]
     set script [lindex $entry $field]
     echo $script
+    set serial [begin]
     if {[catch {uplevel #0 $script} result]} {
         showError "[string range $verb 0 end-2] $label: $result"
         changed
         return
     }
+    succeeded $serial
     set from [lrange $from 0 end-1]
     lappend to $entry
     status "$verb: $label"
@@ -94,9 +123,13 @@ proc ::sf::gui::echo {cmd} {
     }
 }
 
-proc ::sf::gui::showError {message} {
+# An error in the console (with its details, as a typed one's) and the
+# status bar.
+proc ::sf::gui::showError {message {options {}}} {
     if {[info exists ::sf::gui::W(console)]} {
-        console::write $::sf::gui::W(console) "$message\n" error
+        set info [expr {[dict exists $options -errorinfo] ? [dict get $options -errorinfo] : ""}]
+        set code [expr {[dict exists $options -errorcode] ? [dict get $options -errorcode] : ""}]
+        console::ShowError $::sf::gui::W(console) $message $info $code
     }
     status $message error
 }
@@ -321,7 +354,7 @@ proc ::sf::gui::bondSelection {} {
     if {[llength $pairs]} {
         lappend undoStack [list "bond $n" $cmd [list ::sf::gui::unbond $pairs]]
     }
-    status "$n bonds made"
+    status "[runbar::counted $n bond] made"
 }
 
 # Deletes the bonds between the given pairs of elements.

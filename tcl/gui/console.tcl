@@ -9,6 +9,7 @@
 #   ::sf::gui::console::echo W command         show a GUI action as typed
 #   ::sf::gui::console::eval W script          -> {code result}, as if typed
 #   ::sf::gui::console::history                the commands, oldest first
+#   ::sf::gui::console::beforeEval             hook, called before each one
 #   ::sf::gui::console::afterEval code result  hook, called after each one
 #
 # Layout of the text: the log, then the prompt, then the input:
@@ -44,7 +45,10 @@ namespace eval ::sf::gui::console {
     }
 }
 
-# A default hook; the GUI redefines it to refresh its view.
+# Default hooks; the GUI redefines them (its status bar, its view).
+if {[info commands ::sf::gui::console::beforeEval] eq ""} {
+    proc ::sf::gui::console::beforeEval {} {}
+}
 if {[info commands ::sf::gui::console::afterEval] eq ""} {
     proc ::sf::gui::console::afterEval {code result} {}
 }
@@ -368,6 +372,9 @@ proc ::sf::gui::console::Run {W script} {
     if {[info exists S($W,busy)]} {
         incr S($W,busy)
     }
+    if {[catch beforeEval msg]} {
+        Put $W "beforeEval: $msg\n" warning
+    }
     set code [catch {uplevel #0 $script} result opts]
     if {[info exists S($W,busy)]} {
         incr S($W,busy) -1
@@ -392,7 +399,7 @@ proc ::sf::gui::console::Show {W code result opts} {
             }
         }
         1 {
-            ShowError $W $result [dict get $opts -errorinfo]
+            ShowError $W $result [dict get $opts -errorinfo] [dict get $opts -errorcode]
         }
         3 {
             ShowError $W {invoked "break" outside of a loop} {}
@@ -406,11 +413,16 @@ proc ::sf::gui::console::Show {W code result opts} {
     }
 }
 
-# The message in red; the stack trace, when it says more than the command
-# typed, behind a "(details)" link.
-proc ::sf::gui::console::ShowError {W message info} {
+# The message in red; behind a "(details)" link, its error code (what a
+# script can catch) and the stack trace.
+proc ::sf::gui::console::ShowError {W message info {code {}}} {
     variable S
+    if {![winfo exists $W.text]} return
     set trace [Trace $message $info]
+    if {$code ni {{} NONE}} {
+        set trace "error code: $code\n$trace"
+    }
+    set trace [string trimright $trace]
     if {$trace eq ""} {
         Put $W $message\n error
         return
@@ -423,8 +435,8 @@ proc ::sf::gui::console::ShowError {W message info} {
         [list ::sf::gui::console::Details $W $n]
 }
 
-# The frames of errorInfo below the message, or "" when the only frame is
-# the command itself.
+# The frames of errorInfo below the message (the command typed itself is
+# one: a user who typed several lines sees which failed).
 proc ::sf::gui::console::Trace {message info} {
     # Our own "uplevel" frame ends every trace: drop it.
     set cut [string last "\n    (\"uplevel\" body line" $info]
@@ -434,12 +446,7 @@ proc ::sf::gui::console::Trace {message info} {
     if {[string first $message $info] == 0} {
         set info [string range $info [string length $message] end]
     }
-    set info [string trimleft $info \n]
-    set frames [regexp -all -line {^    (while executing|invoked from within|\()} $info]
-    if {$frames <= 1} {
-        return ""
-    }
-    return $info
+    return [string trimleft $info \n]
 }
 
 proc ::sf::gui::console::Details {W n} {

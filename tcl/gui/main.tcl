@@ -16,6 +16,9 @@ namespace eval ::sf::gui {
     variable W                 ;# the main widgets by role
     array set W {}
     variable message ""        ;# the status bar's message
+    variable messageAt 0       ;# commands started when it was given
+    variable messageLife 6000  ;# milliseconds a message stays at most
+    variable messageTimer ""
     variable pointer ""        ;# the pointer's world position
     variable scriptDir [pwd]   ;# where the file dialogs start
 }
@@ -31,11 +34,19 @@ proc ::sf::gui::tip {w text} {
     if {[llength [info commands ::tooltip::tooltip]]} { ::tooltip::tooltip $w $text }
 }
 
-# A message in the status bar; errors in red until the next message.
+# A message in the status bar (errors in red): it stays until a command
+# started after it succeeds, or for messageLife milliseconds.
 proc ::sf::gui::status {text {kind info}} {
     variable message
+    variable messageAt
+    variable messageLife
+    variable messageTimer
+    variable started
     variable W
     set message $text
+    set messageAt $started
+    after cancel $messageTimer
+    if {$text ne ""} { set messageTimer [after $messageLife [list ::sf::gui::status ""]] }
     if {[info exists W(status)] && [winfo exists $W(status).message]} {
         $W(status).message configure -foreground [expr {$kind eq "error" ? "#c92a2a" : "#555555"}]
     }
@@ -200,11 +211,80 @@ proc ::sf::gui::askRange {} {
     viewSet -range $value
 }
 
+# A pane whose content (made by `make PATH`) scrolls up and down, with a
+# scrollbar while the window is too short for it (the wheel scrolls it too)
+# -> the content's path.
+proc ::sf::gui::scrollPane {path make} {
+    ttk::frame $path
+    canvas $path.c -highlightthickness 0 -borderwidth 0 \
+        -background [ttk::style lookup TFrame -background] \
+        -yscrollcommand [list ::sf::gui::scrollShown $path]
+    ttk::scrollbar $path.sb -orient vertical -command [list $path.c yview]
+    set inner [{*}$make $path.c.in]
+    $path.c create window 0 0 -window $inner -anchor nw -tags inner
+    grid $path.c $path.sb -sticky ns
+    grid configure $path.c -sticky nsew
+    grid columnconfigure $path 0 -weight 1
+    grid rowconfigure $path 0 -weight 1
+    grid remove $path.sb
+    ::bind $inner <Configure> [list ::sf::gui::scrollFit $path]
+    # Its width with or without the scrollbar: the panes are fitted again.
+    ::bind $path <Configure> {after idle ::sf::gui::fitPanes}
+    ::bind $path.c <Configure> {%W itemconfigure inner -width %w}
+    foreach {event delta} {<Button-4> -1 <Button-5> 1} {
+        ::bind ScrollPane$path $event [list $path.c yview scroll $delta units]
+    }
+    return $inner
+}
+
+# The pane asks for its content's width; its scroll region is the content.
+proc ::sf::gui::scrollFit {path} {
+    set inner $path.c.in
+    $path.c configure -width [winfo reqwidth $inner] -scrollregion [list 0 0 0 [winfo reqheight $inner]]
+    # The wheel scrolls it over any of its parts, those made since too.
+    set todo [list $inner]
+    while {[llength $todo]} {
+        set todo [lassign $todo w]
+        if {"ScrollPane$path" ni [bindtags $w]} { bindtags $w [linsert [bindtags $w] end ScrollPane$path] }
+        lappend todo {*}[winfo children $w]
+    }
+}
+
+proc ::sf::gui::scrollShown {path first last} {
+    if {$first <= 0 && $last >= 1} { grid remove $path.sb } else { grid $path.sb }
+    $path.sb set $first $last
+}
+
+# As the window narrows the panes give up width in order: the middle (view,
+# console, plot) down to centreMin pixels, then the properties down to
+# propsMin; the tools keep theirs.
+namespace eval ::sf::gui { variable centreMin 520; variable propsMin 190 }
+proc ::sf::gui::fitPanes {} {
+    variable centreMin
+    variable propsMin
+    variable fitted
+    set width [winfo width .main]
+    if {$width < 100 || [llength [.main panes]] < 3} return
+    set tools [winfo reqwidth .main.tools]
+    set props [winfo reqwidth .main.props]
+    # Once for each window width and pair of wants: moving a sash configures
+    # the panes again, which must not fit them again.
+    set wants [list $width $tools $props $centreMin $propsMin]
+    if {[info exists fitted] && $fitted eq $wants} return
+    set fitted $wants
+    set sash [expr {max(1, [winfo x .main.centre] - [winfo width .main.tools] - [winfo x .main.tools])}]
+    set centre [expr {$width - $tools - $props - 2 * $sash}]
+    if {$centre < $centreMin} { set props [expr {max($propsMin, $props - ($centreMin - $centre))}] }
+    .main sashpos 0 $tools
+    .main sashpos 1 [expr {$width - $props - $sash}]
+}
+
 proc ::sf::gui::layout {} {
     variable W
     style
     wm title . "sandflow"
-    wm minsize . 900 600
+    # The least size at which every control shows whole (the run bar's width).
+    wm minsize . 1000 600
     menus
     set W(runbar) [runbar::create .runbar]
     set W(status) [runbar::statusBar .status]
@@ -214,7 +294,7 @@ proc ::sf::gui::layout {} {
     pack $W(status) -side bottom -fill x
 
     ttk::panedwindow .main -orient horizontal
-    set W(tools) [tools::create .main.tools]
+    set W(tools) [scrollPane .main.tools tools::create]
     ttk::panedwindow .main.centre -orient vertical
     ttk::frame .main.centre.viewframe -borderwidth 1 -relief sunken
     set W(view) [view::create .main.centre.viewframe.view]
@@ -222,7 +302,7 @@ proc ::sf::gui::layout {} {
     tools::bind $W(view)
     ttk::panedwindow .main.centre.bottom -orient horizontal
     ttk::labelframe .main.centre.bottom.con -text Console -padding 2
-    set W(console) [console::create .main.centre.bottom.con.c]
+    set W(console) [console::create .main.centre.bottom.con.c -width 40 -height 8]
     pack $W(console) -fill both -expand 1
     ttk::labelframe .main.centre.bottom.plot -text "Live plot" -padding 2
     set W(plots) [plots::create .main.centre.bottom.plot.p]
@@ -231,11 +311,12 @@ proc ::sf::gui::layout {} {
     .main.centre.bottom add .main.centre.bottom.plot -weight 2
     .main.centre add .main.centre.viewframe -weight 4
     .main.centre add .main.centre.bottom -weight 1
-    set W(props) [props::create .main.props]
-    .main add $W(tools) -weight 0
+    set W(props) [scrollPane .main.props props::create]
+    .main add .main.tools -weight 0
     .main add .main.centre -weight 1
-    .main add $W(props) -weight 0
+    .main add .main.props -weight 0
     pack .main -fill both -expand 1
+    ::bind .main <Configure> {after idle ::sf::gui::fitPanes}
     keys
     syncViewMenu
     # Most of the screen, leaving room for a panel or a dock.
@@ -253,11 +334,19 @@ proc ::sf::warn {message} {
     ::sf::gui::status "warning: $message" error
 }
 
-# After each command typed at the console: the scene may have changed.
+# Each command typed at the console is numbered as it starts; after it, the
+# scene may have changed.
+proc ::sf::gui::console::beforeEval {} {
+    lappend ::sf::gui::typing [::sf::gui::begin]
+}
 proc ::sf::gui::console::afterEval {code result} {
+    set serial [lindex $::sf::gui::typing end]
+    set ::sf::gui::typing [lrange $::sf::gui::typing 0 end-1]
+    if {$code != 1 && $serial ne ""} { ::sf::gui::succeeded $serial }
     ::sf::gui::syncViewMenu
     ::sf::gui::changed
 }
+set ::sf::gui::typing {}   ;# the numbers of the typed commands running, innermost last
 
 proc ::sf::gui::openScript {} {
     variable scriptDir
@@ -372,19 +461,30 @@ proc ::sf::gui::showReference {} {
     ttk::scrollbar $t.sy -command [list $t.text yview]
     pack $t.sy -side right -fill y
     pack $t.text -fill both -expand 1
-    set doc [file join [file dirname [file dirname $::sf::gui::library]] .. docs commands.md]
-    set doc [file normalize $doc]
-    if {[file exists $doc]} {
-        set ch [open $doc]
-        $t.text insert end [read $ch]
+    $t.text insert end [referenceText]
+    $t.text configure -state disabled
+}
+
+# docs/commands.md of the source tree the workbench runs from (tcl/gui's
+# grandparent); where there is none (an installed program), `help` and the
+# help of every command that has a `help` verb.
+proc ::sf::gui::referenceText {{doc ""}} {
+    if {$doc eq ""} {
+        set doc [file join [file dirname [file dirname $::sf::gui::library]] docs commands.md]
+    }
+    if {![catch {open $doc} ch]} {
+        set text [read $ch]
         close $ch
-    } else {
-        $t.text insert end [help]
-        foreach noun {lattice sim material disc element bond source view output record plot} {
-            $t.text insert end "\n\n" {} [$noun help]
+        return $text
+    }
+    set text [::sf::help]
+    foreach cmd [lsort [info commands ::sf::*]] {
+        if {[namespace ensemble exists $cmd] &&
+                [dict exists [namespace ensemble configure $cmd -map] help]} {
+            append text \n\n [$cmd help]
         }
     }
-    $t.text configure -state disabled
+    return $text
 }
 
 proc ::sf::gui::about {} {
