@@ -24,9 +24,10 @@ set LBSHOWSOLUTION velocity
 setscales -0.1 -0.1 2.1 1.1
 addlatticeui 0.0 0.0 2.0 1.0 200
 
-# The disc: held in x, y and rotation, at rest.
+# The disc, of material 1 (the first: default): held in x, y and rotation,
+# at rest.
 set disc [get_next_available_id]
-adddiscui default 0.5 0.5 0.051 $disc
+adddiscui 1 0.5 0.5 0.051 $disc
 set_velocity 1 1 1 0.0 0.0 0.0 $disc
 
 printLB

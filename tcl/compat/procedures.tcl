@@ -37,10 +37,24 @@ proc ::sf::thesis::createLattice {request} {
     ::sf::lattice create {*}$options
 }
 
-# A disc of that material, centre and radius, with that id -> id
+# A disc of that material (a name, or the thesis's number), centre and
+# radius, with that id -> id
 proc ::sf::thesis::adddiscui {material x y radius id} {
     numbers x y radius
-    ::sf::disc create -material $material -center [list $x $y] -radius $radius -id $id
+    ::sf::disc create -material [materialOf $material] -center [list $x $y] -radius $radius \
+        -id $id
+}
+
+# The thesis numbers its materials, 1 the first; sandflow names them, in the
+# order they were made (`material names`: default first). A material's name
+# wins over a number; a name that is neither is left for the command to refuse.
+proc ::sf::thesis::materialOf {material} {
+    set names [::sf::material names]
+    if {$material in $names || ![string is wideinteger -strict $material]} { return $material }
+    if {$material >= 1 && $material <= [llength $names]} { return [lindex $names $material-1] }
+    set numbered [lmap name $names {format "%d %s" [incr k] $name}]
+    return -level 1 -code error -errorcode {SANDFLOW LOOKUP MATERIAL} \
+        "no material numbered $material: [join $numbered {, }]"
 }
 
 # Flags (1 = held) for x, y and rotation, then the velocities (vx, vy, w),
