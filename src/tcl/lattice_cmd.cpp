@@ -216,7 +216,12 @@ int LatticeConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
     std::vector<bool> given;
     if (!kOptions.apply(interp, objc, objv, 1, stage, &given)) return TCL_ERROR;
     LatticeDef& def = stage.def;  // (a new density: the kernel refuses it)
-    // Keep the timestep unless tau is what changed.
+    // Keep the timestep unless tau is what changed. Neither given: the two
+    // of viscosity, tau and timestep the lattice was given, not all three
+    // resolved (which would give the timestep again to the last bit or not).
+    const LatticeDef& was = s.manager.lattice().params().def;
+    if (!given[kViscosity] && !given[kTau])
+      def.viscosity = was.viscosity, def.tau = was.tau, def.timestep = was.timestep;
     if (given[kViscosity] && !given[kTau]) def.tau.reset();
     if (given[kTau]) def.timestep.reset();
     s.manager.reconfigureLattice(def);
