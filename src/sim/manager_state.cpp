@@ -14,10 +14,8 @@ void Manager::saveState(ByteWriter& out) const {
   out.put(std::int32_t(substeps_));
   out.put(std::int32_t(coupling_.subcells)), out.put(std::int32_t(coupling_.share));
   out.put(coupling_.buoyancy), out.put(coupling_.equilibriumInterior), out.put(coupling_.implicit);
-  out.put(coupled_), out.put(machWarned_), out.put(solidMachWarned_);
-  out.put(std::vector<int>(underResolvedWarned_.begin(), underResolvedWarned_.end()));
-  out.put(std::uint64_t(warningLog_.size()));
-  for (const Warning& w : warningLog_) out.put(w.text), out.put(std::uint8_t(w.remedy));
+  out.put(coupled_);
+  watch_.save(out);
   out.put(lattice_ != nullptr);
   if (lattice_) lattice_->saveState(out);
   assembly_.saveState(out);
@@ -40,21 +38,8 @@ void Manager::loadState(ByteReader& in) {
   c.buoyancy = in.getBool("coupling"), c.equilibriumInterior = in.getBool("coupling");
   c.implicit = in.getBool("coupling");
   setCoupling(c);  // its own checks
-  coupled_ = in.getBool("flags"), machWarned_ = in.getBool("flags");
-  solidMachWarned_ = in.getBool("flags");
-  std::vector<int> warned;
-  in.get(warned, "warnings");
-  underResolvedWarned_ = std::set<int>(warned.begin(), warned.end());
-  const std::size_t warnings = in.count(8, "warnings");
-  warningLog_.resize(warnings);
-  for (Warning& w : warningLog_) {
-    in.get(w.text, "warnings");
-    // Version 1 wrote the remedy's words into the sentence.
-    if (in.version < 2) continue;
-    const auto remedy = in.get<std::uint8_t>("warnings");
-    if (remedy >= kRemedyCount) ByteReader::fail("it holds an unknown remedy");
-    w.remedy = Remedy(remedy);
-  }
+  coupled_ = in.getBool("flags");
+  watch_.load(in);
   if (in.getBool("lattice")) lattice_ = lb::Lattice::loadState(in);
   attachParts();
   assembly_.loadState(in);

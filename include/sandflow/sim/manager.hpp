@@ -4,24 +4,16 @@
 // needs: no lattice, no fluid pass; no elements, no DEM pass.
 #include <memory>
 #include <optional>
-#include <set>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "sandflow/core/profile.hpp"
 #include "sandflow/coupling/coupler.hpp"
 #include "sandflow/dem/assembly.hpp"
 #include "sandflow/lb/lattice.hpp"
+#include "sandflow/sim/step_watch.hpp"
 
 namespace sf::sim {
-
-// A warning as the kernel gives it: its sentence, and what the user can do
-// about it (the front end words the remedy).
-struct Warning {
-  std::string text;
-  Remedy remedy = Remedy::none;
-};
 
 class Manager {
  public:
@@ -82,18 +74,11 @@ class Manager {
   // Clears the scene (lattice, time, settings) but keeps the thread count.
   void reset();
 
-  // Above this tau, BGK's bounce-back walls slip by over 5% of a 16-cell
-  // channel's speed (docs/stability.md); TRT's magic walls do not.
-  static constexpr double kBgkTauLimit = 2.0;
-  // The cell Reynolds number u h / nu above which a warning is given: a
-  // lid-driven cavity at 0.02 c stays under its lid's speed at 12 (tau
-  // 0.505) and outruns it unseen at 60 (BGK, tau 0.501; docs/stability.md).
-  static constexpr double kCellReynoldsLimit = 20.0;
-  double machWarnLimit() const { return 0.1; }
+  double machWarnLimit() const { return StepWatch::kMachWarnLimit; }
   double machStopLimit() const { return 0.3; }
-  // Warnings raised since the last call (each kind once per lattice).
+  // Warnings raised since the last call, and all of them (the watch's).
   std::vector<Warning> takeWarnings();
-  const std::vector<Warning>& warnings() const { return warningLog_; }
+  const std::vector<Warning>& warnings() const { return watch_.log(); }
 
   // Where the steps' time went, stage by stage, since the profile was last
   // reset (the run command resets it at each run's start and adds its
@@ -124,21 +109,7 @@ class Manager {
   // each step (a moved Manager's coupler and elements keep the count as their
   // own until then).
   void attachParts();
-  void warn(const std::string& message, Remedy remedy = Remedy::none);
-  // Whether a warning holding `marker` was given since the last reset. The
-  // warnings below are given once a run this way: the log is in the
-  // checkpoint, so a continued run gives the same ones.
-  bool warned(std::string_view marker) const;
-  // BGK with tau past kBgkTauLimit along no-slip walls: the walls slip.
-  void checkCollision();
-  // Elements that the explicit coupling drives unstable, or that meet their
-  // own periodic image (after the coupler's prepare).
-  void checkCoverage();
-
   void checkDemTimestep(double step, int substeps) const;
-  void checkDemAccuracy(double dt);
-  void checkCellReynolds();
-  void checkOutrun();
   void coupleBeforeFluid();
   void stepElements(double dt);
 
@@ -153,15 +124,12 @@ class Manager {
   long long steps_ = 0;
   long long latticeBorn_ = -1000000000;  // steps_ when the lattice was made (checkOutrun)
   double mlups_ = 0.0;
-  bool machWarned_ = false;
   coupling::Settings coupling_;
   coupling::Coupler coupler_;
   bool coupled_ = false;
   int substeps_ = 1;
-  bool solidMachWarned_ = false;
-  std::set<int> underResolvedWarned_;
   Profile profile_;
-  std::vector<Warning> pendingWarnings_, warningLog_;
+  StepWatch watch_;
 };
 
 }  // namespace sf::sim
