@@ -71,7 +71,7 @@ void Lattice::fill() {
   for (const auto& k : kinds_) k->fill(f_, layout_, threads_.get());
 }
 
-void Lattice::reconfigure(const ResolvedLattice& params) {
+void Lattice::reconfigure(const ResolvedLattice& params, double machLimit) {
   if (params.nx != p_.nx || params.ny != p_.ny || params.h != p_.h ||
       params.def.origin != p_.def.origin)
     throw Error("VALUE GEOMETRY",
@@ -102,7 +102,7 @@ void Lattice::reconfigure(const ResolvedLattice& params) {
                            next.tauMinus() != p_.tauMinus() || next.def.forcing != p_.def.forcing ||
                            next.def.collision != p_.def.collision ||
                            next.def.forceScheme != p_.def.forceScheme;
-  if (stepChanged) convertPopulations(next);
+  if (stepChanged) convertPopulations(next, machLimit);
   p_ = next;
   if (wallsChanged)
     rebuildTopology();  // fills the walls' slots

@@ -81,7 +81,7 @@ void convertNode(const StepContext& from, const StepContext& to, const Scales& k
 
 }  // namespace
 
-void Lattice::convertPopulations(const ResolvedLattice& next) {
+void Lattice::convertPopulations(const ResolvedLattice& next, double machLimit) {
   // The old state, read throughout from a copy (a node's new outputs sit
   // where its neighbours' old ones are read); the new written into f_, in
   // the same layout (walls' slots are filled after).
@@ -148,12 +148,36 @@ void Lattice::convertPopulations(const ResolvedLattice& next) {
     covered_.collideCell(to, cells[m], n);
     bad = std::min(bad, write(c.node, n));
   }
+  const auto nodeName = [&](std::int64_t x) {
+    return "node (" + std::to_string(int(x % rowStride_) - 1) + ", " +
+           std::to_string(int(x / rowStride_) - 1) + ")";
+  };
   if (bad != std::numeric_limits<std::int64_t>::max()) {
     std::copy(old.begin(), old.end(), f_);
-    const int i = int(bad % rowStride_) - 1, j = int(bad / rowStride_) - 1;
-    throw Error("UNSTABLE NAN", "the flow at the new step would not be finite at node (" +
-                                    std::to_string(i) + ", " + std::to_string(j) +
-                                    "): the scene is unstable there already");
+    throw Error("UNSTABLE NAN", "the flow at the new step would not be finite at " + nodeName(bad) +
+                                    ": the scene is unstable there already");
+  }
+  // The same physical flow can be too fast for the new step's lattice speed
+  // (a timestep many times larger): refused, as the next step would.
+  const double back = to.forceScheme == ForceScheme::guo ? 0.5 : 1.0;
+  double worst = 0;
+  std::int64_t at = -1;
+  for (int j = 0; j < p_.ny; ++j)
+    for (int i = 0; i < p_.nx; ++i) {
+      const std::int64_t x = index(i, j);
+      if (!holdsFluid(x)) continue;
+      double rho, jx, jy;
+      moments(f_, layout_, x, rho, jx, jy);
+      const double ux = (jx - back * to.params.fx) / rho, uy = (jy - back * to.params.fy) / rho;
+      const double u2 = !(rho > 0) ? INFINITY : ux * ux + uy * uy;
+      if (u2 > worst) worst = u2, at = x;
+    }
+  if (!(worst <= machLimit * machLimit)) {
+    std::copy(old.begin(), old.end(), f_);
+    throw Error("UNSTABLE MACH", "at the new timestep " + formatNumber(next.dt) + " the flow at " +
+                                     nodeName(at) + " would move at Mach " +
+                                     formatNumber(std::sqrt(worst)) + ", beyond " +
+                                     formatNumber(machLimit) + ": take a smaller timestep");
   }
   covered_.cells.swap(cells);
   canUndo_ = false;

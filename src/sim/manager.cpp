@@ -127,7 +127,7 @@ void Manager::configureStep(const std::optional<lb::LatticeDef>& def, std::optio
     const double step = next ? next->dt : timestep();
     if (step > 0) checkDemTimestep(step, n);
   }
-  if (next) lattice_->reconfigure(*next);
+  if (next) lattice_->reconfigure(*next, machStopLimit());
   if (dt)
     fixedTimestep_ = *dt;
   else if (fixedTimestep_ && next)

@@ -69,7 +69,9 @@ class Lattice {
   // The physical flow carries over: velocity, pressure and the viscous stress
   // (convertPopulations); a pressure side the change leaves alone keeps its
   // excess over the reference pressure c_s^2 rho0.
-  void reconfigure(const ResolvedLattice& params);
+  // A change after which the flow would be faster than `machLimit` (or not
+  // finite) is refused with nothing changed.
+  void reconfigure(const ResolvedLattice& params, double machLimit = 0.3);
 
   // One step. On NaN or a Mach number above `machLimit` it throws sf::Error
   // (code "UNSTABLE ...") naming the node; with keepPrevious the state before
@@ -181,7 +183,7 @@ class Lattice {
   StepContext contextFor(const ResolvedLattice& params) const;
   // Rewrites the populations for `next` from the present parameters, keeping
   // the physical state (lattice_convert.cpp).
-  void convertPopulations(const ResolvedLattice& next);
+  void convertPopulations(const ResolvedLattice& next, double machLimit);
   // The post-collision populations of a node at rest in equilibrium at rho, u
   // (lattice units) under ctx's collision and forcing.
   static void collidedEquilibrium(const StepContext& ctx, double rho, const Vec2& u,
