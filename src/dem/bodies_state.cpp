@@ -85,7 +85,10 @@ std::vector<std::string> Bodies::validate(const MaterialTable& materials) const 
 
   for (std::size_t s = 0; s < n; ++s) {
     const int i = id[s];
-    if (slot(i) != int(s)) problem(element(i) + " is not found at its slot");
+    // slotOf read directly: slot() asserts this very invariant.
+    const auto at = slotOf.find(i);
+    if (at == slotOf.end() || at->second != int(s))
+      problem(element(i) + " is not found at its slot");
     if (!shape[s]) {
       problem(element(i) + " has no shape");
       continue;
