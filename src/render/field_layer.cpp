@@ -17,12 +17,46 @@ bool holdsFluid(NodeKind k) {
   return k == NodeKind::fluid || k == NodeKind::velocity || k == NodeKind::pressure;
 }
 
+// Velocities, and which nodes hold fluid, over a window of nodes; a node
+// outside it (a neighbour across a periodic seam) is read off the lattice.
+struct VelocityWindow {
+  const lb::Lattice& lattice;
+  int i0, j0, width, height;
+  std::vector<Vec2> u;
+  std::vector<std::uint8_t> fluid;
+
+  VelocityWindow(const lb::Lattice& l, int ia, int ja, int ib, int jb)
+      : lattice(l), i0(ia), j0(ja), width(ib - ia), height(jb - ja) {
+    const std::size_t n = std::size_t(std::max(0, width)) * std::max(0, height);
+    u.assign(n, Vec2::Zero());
+    fluid.assign(n, 0);
+#pragma omp parallel for schedule(dynamic, 8)
+    for (int b = 0; b < height; ++b)
+      for (int a = 0; a < width; ++a) {
+        const std::size_t k = std::size_t(b) * width + a;
+        fluid[k] = holdsFluid(lattice.kind(i0 + a, j0 + b));
+        if (fluid[k]) u[k] = lattice.velocity(i0 + a, j0 + b);
+      }
+  }
+  // False where (i, j) holds no fluid.
+  bool at(int i, int j, Vec2& out) const {
+    const int a = i - i0, b = j - j0;
+    if (a >= 0 && b >= 0 && a < width && b < height) {
+      const std::size_t k = std::size_t(b) * width + a;
+      if (fluid[k]) out = u[k];
+      return fluid[k];
+    }
+    if (!holdsFluid(lattice.kind(i, j))) return false;
+    out = lattice.velocity(i, j);
+    return true;
+  }
+};
+
 // d(field)/d(axis) at a node by central differences between fluid neighbours
 // (one-sided next to walls, across periodic edges where the lattice wraps).
 struct Gradient {
-  const lb::Lattice& lattice;
-  const std::vector<Vec2>& u;
-  const std::vector<std::uint8_t>& fluid;
+  const VelocityWindow& u;
+  int nx, ny;
   bool periodic[2];
 
   int wrap(int k, int n, int axis, bool& ok) const {
@@ -30,20 +64,19 @@ struct Gradient {
     ok = periodic[axis];
     return (k + n) % n;
   }
-  // Derivative of component c along axis at (i, j), per node spacing.
+  // Derivative of component c along axis at fluid node (i, j), per node spacing.
   double operator()(int i, int j, int axis, int c) const {
-    const int nx = lattice.nx(), ny = lattice.ny();
     auto at = [&](int di, int dj, bool& ok) {
       ok = true;
       const int ii = wrap(i + di, nx, 0, ok), jj = wrap(j + dj, ny, 1, ok);
-      const std::size_t n = std::size_t(jj) * nx + ii;
-      ok = ok && fluid[n];
-      return ok ? u[n][c] : 0.0;
+      Vec2 v = Vec2::Zero();
+      ok = ok && u.at(ii, jj, v);
+      return ok ? v[c] : 0.0;
     };
-    bool okPlus = false, okMinus = false;
+    bool okPlus = false, okMinus = false, okHere = false;
     const double plus = axis == 0 ? at(1, 0, okPlus) : at(0, 1, okPlus);
     const double minus = axis == 0 ? at(-1, 0, okMinus) : at(0, -1, okMinus);
-    const double here = u[std::size_t(j) * nx + i][c];
+    const double here = at(0, 0, okHere);
     if (okPlus && okMinus) return 0.5 * (plus - minus);
     if (okPlus) return plus - here;
     if (okMinus) return here - minus;
@@ -69,80 +102,166 @@ double stillSpeed(const lb::Lattice& lattice) {
   return 1e-9 * lattice.params().h / lattice.params().dt;
 }
 
+// The first and last node of a grid's column or row list ({0, -1} if empty).
+std::array<int, 2> nodeSpan(const std::vector<int>& nodes) {
+  if (nodes.empty()) return {0, -1};
+  const auto [lo, hi] = std::minmax_element(nodes.begin(), nodes.end());
+  return {*lo, *hi};
+}
+
+// One axis of viewGrid: the lattice's nodes [0, n) of size h from `origin`;
+// world coordinate w maps to pixel p0 + (w - w0) * scale; the viewport spans
+// pixels [v0, v1).
+void gridAxis(double origin, double h, int n, double w0, double p0, double scale, double v0,
+              double v1, bool pixels, std::vector<int>& nodes, double& lo, double& hi) {
+  const double a = std::max(p0 + (origin - w0) * scale, v0);
+  const double b = std::min(p0 + (origin + n * h - w0) * scale, v1);
+  lo = hi = origin;
+  if (!(b > a)) return;
+  auto worldAt = [&](double pixel) { return w0 + (pixel - p0) / scale; };
+  auto nodeAt = [&](double x) {
+    return int(std::clamp(std::floor((x - origin) / h), 0.0, n - 1.0));
+  };
+  if (h * scale >= 1) {  // nodes of a pixel or more: those in view
+    const int i0 = nodeAt(worldAt(a));
+    const int i1 = int(std::clamp(std::ceil((worldAt(b) - origin) / h), i0 + 1.0, double(n)));
+    for (int i = i0; i < i1; ++i) nodes.push_back(i);
+    lo = origin + i0 * h;
+    hi = origin + i1 * h;
+  } else if (pixels) {
+    // Smaller nodes, on the final pixels: a texel per pixel whose centre lies
+    // on the lattice (those GL fills for a quad over it), the node under
+    // that centre.
+    const double first = std::ceil(a - 0.5), last = std::ceil(b - 0.5);
+    for (double x = first; x < last; ++x) nodes.push_back(nodeAt(worldAt(x + 0.5)));
+    lo = worldAt(first);
+    hi = worldAt(last);
+  } else {
+    // Smaller nodes, at a scale the final one may fall short of: texels of
+    // about a pixel tiling the lattice in view, each the node under its centre.
+    lo = worldAt(a);
+    hi = worldAt(b);
+    const int count = int(std::ceil(b - a - 1e-9));
+    for (int k = 0; k < count; ++k) nodes.push_back(nodeAt(lo + (k + 0.5) * (hi - lo) / count));
+  }
+}
+
+// Sizes `f` to the grid and fills it: value(i, j, fluid) at each texel's
+// node (NaN where the field has none). Texels on the node of the one before
+// them (pixels smaller than nodes) take its value: each node is read once.
+// Rows go a few at a time as threads come free: on a shared machine one
+// thread may stall.
+template <class Value>
+void sampleGrid(const lb::Lattice& lattice, const detail::FieldGrid& grid, FieldValues& f,
+                const Value& value) {
+  f.nx = grid.width();
+  f.ny = grid.height();
+  f.value.resize(std::size_t(f.nx) * f.ny);
+  f.fluid.resize(f.value.size());
+#pragma omp parallel for schedule(dynamic, 8)
+  for (int b = 0; b < f.ny; ++b) {
+    const int j = grid.row[std::size_t(b)];
+    if (b > 0 && grid.row[std::size_t(b) - 1] == j) continue;
+    for (int a = 0; a < f.nx; ++a) {
+      const int i = grid.col[std::size_t(a)];
+      const std::size_t k = std::size_t(b) * f.nx + a;
+      if (a > 0 && grid.col[std::size_t(a) - 1] == i) {
+        f.fluid[k] = f.fluid[k - 1];
+        f.value[k] = f.value[k - 1];
+      } else {
+        f.fluid[k] = holdsFluid(lattice.kind(i, j));
+        f.value[k] = value(i, j, f.fluid[k] != 0);
+      }
+    }
+  }
+  for (int b = 1; b < f.ny; ++b)
+    if (grid.row[std::size_t(b) - 1] == grid.row[std::size_t(b)]) {
+      const auto above = std::ptrdiff_t(b - 1) * f.nx, row = std::ptrdiff_t(b) * f.nx;
+      std::copy_n(f.fluid.begin() + above, f.nx, f.fluid.begin() + row);
+      std::copy_n(f.value.begin() + above, f.nx, f.value.begin() + row);
+    }
+}
+
 }  // namespace
 
 FieldValues sampleField(const lb::Lattice& lattice, Field field,
                         const std::optional<std::array<double, 2>>& range) {
   return detail::sampleField(
       lattice, field == Field::solid ? detail::solidRatios(lattice) : std::vector<float>(), field,
-      range);
+      range, detail::wholeLattice(lattice));
 }
 
 namespace detail {
 
+FieldGrid wholeLattice(const lb::Lattice& lattice) {
+  FieldGrid g;
+  for (int i = 0; i < lattice.nx(); ++i) g.col.push_back(i);
+  for (int j = 0; j < lattice.ny(); ++j) g.row.push_back(j);
+  const Window w = latticeWindow(lattice);
+  g.x0 = w.x0;
+  g.y0 = w.y0;
+  g.x1 = w.x1;
+  g.y1 = w.y1;
+  return g;
+}
+
+FieldGrid viewGrid(const lb::Lattice& lattice, const WorldMap& world, const Rect& viewport,
+                   bool pixels) {
+  const auto& p = lattice.params();
+  FieldGrid g;
+  gridAxis(p.def.origin.x(), p.h, p.nx, world.wx0, world.px0, world.pixelsPerUnit, viewport.x0,
+           viewport.x1, pixels, g.col, g.x0, g.x1);
+  gridAxis(p.def.origin.y(), p.h, p.ny, world.wy0, world.py0, world.pixelsPerUnit, viewport.y0,
+           viewport.y1, pixels, g.row, g.y0, g.y1);
+  if (g.col.empty() || g.row.empty()) g = FieldGrid{};
+  return g;
+}
+
 FieldValues sampleField(const lb::Lattice& lattice, const std::vector<float>& eps, Field field,
-                        const std::optional<std::array<double, 2>>& range) {
+                        const std::optional<std::array<double, 2>>& range, const FieldGrid& grid) {
   if (field == Field::none || field == Field::nodes)
     throw Error("VALUE FIELD", "not a scalar field");
   FieldValues f;
-  f.nx = lattice.nx();
-  f.ny = lattice.ny();
-  const std::size_t n = std::size_t(f.nx) * f.ny;
-  f.value.assign(n, std::numeric_limits<double>::quiet_NaN());
-  f.fluid.assign(n, 0);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::vector<Vec2> u;
-  if (field == Field::vorticity) u.assign(n, Vec2::Zero());
+  const int nx = lattice.nx();
   const double cs2 = lattice.params().soundSpeed() * lattice.params().soundSpeed();
   const double p0 = cs2 * lattice.params().def.density;
-#pragma omp parallel
-  {
-    std::vector<double> rho(std::size_t(f.nx));
-    std::vector<Vec2> vel(std::size_t(f.nx));
-#pragma omp for schedule(static)
-    for (int j = 0; j < f.ny; ++j) {
-      if (field != Field::solid) lattice.rowFields(j, rho.data(), vel.data());
-      for (int i = 0; i < f.nx; ++i) {
-        const std::size_t k = std::size_t(j) * f.nx + i;
-        f.fluid[k] = holdsFluid(lattice.kind(i, j));
-        if (field == Field::solid) {
-          f.value[k] = f.fluid[k] ? eps[k] : 1.0;
-          continue;
-        }
-        if (!f.fluid[k]) continue;
-        switch (field) {
-          case Field::density:
-            f.value[k] = rho[std::size_t(i)];
-            break;
-          case Field::pressure:  // as Lattice::pressure, less the reference
-            f.value[k] = cs2 * rho[std::size_t(i)] - p0;
-            break;
-          case Field::velocity:
-            f.value[k] = vel[std::size_t(i)].norm();
-            break;
-          case Field::vorticity:
-            u[k] = vel[std::size_t(i)];
-            break;
-          default:
-            f.value[k] = nan;
-        }
-      }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  switch (field) {
+    case Field::solid:
+      sampleGrid(lattice, grid, f, [&](int i, int j, bool fluid) {
+        return fluid ? double(eps[std::size_t(j) * nx + i]) : 1.0;
+      });
+      break;
+    case Field::density:
+      sampleGrid(lattice, grid, f,
+                 [&](int i, int j, bool fluid) { return fluid ? lattice.density(i, j) : nan; });
+      break;
+    case Field::pressure:  // as Lattice::pressure, less the reference
+      sampleGrid(lattice, grid, f, [&](int i, int j, bool fluid) {
+        return fluid ? cs2 * lattice.density(i, j) - p0 : nan;
+      });
+      break;
+    case Field::velocity:
+      sampleGrid(lattice, grid, f, [&](int i, int j, bool fluid) {
+        return fluid ? lattice.velocity(i, j).norm() : nan;
+      });
+      break;
+    default: {  // vorticity: the velocities of the nodes in view and their neighbours, once each
+      const auto [i0, i1] = nodeSpan(grid.col);
+      const auto [j0, j1] = nodeSpan(grid.row);
+      const VelocityWindow window(lattice, std::max(0, i0 - 1), std::max(0, j0 - 1),
+                                  std::min(nx, i1 + 2), std::min(lattice.ny(), j1 + 2));
+      const auto& sides = lattice.params().def.sides;
+      const Gradient grad{window,
+                          nx,
+                          lattice.ny(),
+                          {sides[lb::left].kind == lb::SideKind::periodic,
+                           sides[lb::bottom].kind == lb::SideKind::periodic}};
+      const double h = lattice.params().h;
+      sampleGrid(lattice, grid, f, [&](int i, int j, bool fluid) {
+        return fluid ? (grad(i, j, 0, 1) - grad(i, j, 1, 0)) / h : nan;
+      });
     }
-  }
-  if (field == Field::vorticity) {
-    const auto& sides = lattice.params().def.sides;
-    const Gradient grad{lattice,
-                        u,
-                        f.fluid,
-                        {sides[lb::left].kind == lb::SideKind::periodic,
-                         sides[lb::bottom].kind == lb::SideKind::periodic}};
-    const double h = lattice.params().h;
-#pragma omp parallel for schedule(static)
-    for (int j = 0; j < f.ny; ++j)
-      for (int i = 0; i < f.nx; ++i) {
-        const std::size_t k = std::size_t(j) * f.nx + i;
-        if (f.fluid[k]) f.value[k] = (grad(i, j, 0, 1) - grad(i, j, 1, 0)) / h;
-      }
   }
   const bool diverging = field == Field::pressure || field == Field::vorticity;
   f.map.map = diverging ? ColorMap::coolwarm : ColorMap::viridis;
@@ -220,6 +339,10 @@ std::vector<float> solidRatios(const lb::Lattice& lattice) {
   return eps;
 }
 
+bool usesSolidRatios(Field field, const ViewOptions& v) {
+  return field == Field::solid || field == Field::nodes || v.vectors || v.streamlines;
+}
+
 Window latticeWindow(const lb::Lattice& lattice) {
   const auto& p = lattice.params();
   return {p.def.origin.x(), p.def.origin.y(), p.def.origin.x() + p.nx * p.h,
@@ -247,7 +370,7 @@ Key nodeKindKey(const lb::Lattice& lattice, const std::vector<float>& eps) {
 }
 
 Sprite fieldSprite(const lb::Lattice& lattice, const std::vector<float>& eps, Field field,
-                   const FieldValues* values, const WorldMap& world) {
+                   const FieldValues* values, const FieldGrid& grid, const WorldMap& world) {
   // A table of the map at 4096 points: within a quarter of a level of the
   // interpolated colour, at a fraction of the cost per node.
   constexpr int kTable = 4096;
@@ -262,17 +385,21 @@ Sprite fieldSprite(const lb::Lattice& lattice, const std::vector<float>& eps, Fi
     return table[std::size_t(std::clamp(t * kTable, 0.0, kTable - 1.0))];
   };
   Sprite s;
-  s.width = lattice.nx();
-  s.height = lattice.ny();
+  s.width = grid.width();
+  s.height = grid.height();
   s.rgba.resize(std::size_t(s.width) * s.height * 4);
-#pragma omp parallel for schedule(static)
-  for (int j = 0; j < s.height; ++j)
-    for (int i = 0; i < s.width; ++i) {
-      const std::size_t k = std::size_t(j) * s.width + i;
+  const int nx = lattice.nx();
+#pragma omp parallel for schedule(dynamic, 8)
+  for (int b = 0; b < s.height; ++b) {
+    const int j = grid.row[std::size_t(b)];
+    for (int a = 0; a < s.width; ++a) {
+      const int i = grid.col[std::size_t(a)];
+      const std::size_t k = std::size_t(b) * s.width + a;
       Rgb c;
       if (field == Field::nodes) {
         const NodeKind kind = lattice.kind(i, j);
-        c = kind == NodeKind::fluid && eps[k] > 0 ? kCoveredColour : nodeKindColour(kind);
+        c = kind == NodeKind::fluid && eps[std::size_t(j) * nx + i] > 0 ? kCoveredColour
+                                                                        : nodeKindColour(kind);
       } else if (values->fluid[k] || field == Field::solid) {
         c = colourOf(values->value[k]);
       } else {
@@ -283,10 +410,11 @@ Sprite fieldSprite(const lb::Lattice& lattice, const std::vector<float>& eps, Fi
       s.rgba[4 * k + 2] = c.b;
       s.rgba[4 * k + 3] = 255;
     }
-  // Node (i, j) is the cell [origin + i h, origin + (i+1) h) (Lattice::position).
-  const auto& p = lattice.params();
-  const Point lo = world(p.def.origin);
-  const Point hi = world(p.def.origin + Vec2(p.nx * p.h, p.ny * p.h));
+  }
+  // Over the grid's world rectangle: node texels over their cells
+  // [origin + i h, origin + (i+1) h) (Lattice::position), pixel texels over their pixels.
+  const Point lo = world(Vec2(grid.x0, grid.y0));
+  const Point hi = world(Vec2(grid.x1, grid.y1));
   s.x0 = lo.x;
   s.y0 = lo.y;
   s.x1 = hi.x;

@@ -1,11 +1,13 @@
 // The one OpenGL drawing routine: textured quads for the field and the
-// overlays, triangle fans for elements, quads for strokes.
+// overlays; strokes and filled outlines as triangles, a layer at a time.
 #include "sandflow/render/gl_draw.hpp"
 
 #include <GL/gl.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace sf::render {
 namespace {
@@ -14,7 +16,42 @@ void colour(const Rgba& c) {
   glColor4ub(c.r, c.g, c.b, c.a);
 }
 
-void stroke(const Stroke& s) {
+// Triangles with a colour at each corner, sent in one call from client
+// arrays. A frame holds thousands of strokes and fills (the outline of each
+// of hundreds of grains); a call per corner (glBegin, glVertex) cost more
+// than the rest of the frame. GL draws them in order, as it did the calls.
+class Triangles {
+ public:
+  void add(const Point& a, const Point& b, const Point& c, const Rgba& colour) {
+    opaque_ = opaque_ && colour.a == 255;
+    for (const Point* p : {&a, &b, &c}) {
+      xy_.insert(xy_.end(), {p->x, p->y});
+      rgba_.insert(rgba_.end(), {colour.r, colour.g, colour.b, colour.a});
+    }
+  }
+  // Blending only where something is translucent: it costs llvmpipe more than
+  // the triangles themselves, and over an opaque colour it changes nothing.
+  void draw() const {
+    if (xy_.empty()) return;
+    if (opaque_) glDisable(GL_BLEND);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, xy_.data());
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, rgba_.data());
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(xy_.size() / 2));
+    glDisableClientState(GL_COLOR_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glEnable(GL_BLEND);
+  }
+
+ private:
+  std::vector<float> xy_;
+  std::vector<std::uint8_t> rgba_;
+  bool opaque_ = true;
+};
+
+// A quad, split as GL splits one.
+void stroke(const Stroke& s, Triangles& out) {
   float dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
   const float len = std::sqrt(dx * dx + dy * dy);
   if (len > 0) {
@@ -28,21 +65,22 @@ void stroke(const Stroke& s) {
   // Square ends: the quad reaches half the width beyond both end points.
   const float ax = s.a.x - h * dx, ay = s.a.y - h * dy, bx = s.b.x + h * dx, by = s.b.y + h * dy;
   const float nx = -h * dy, ny = h * dx;
-  colour(s.colour);
-  glVertex2f(ax + nx, ay + ny);
-  glVertex2f(ax - nx, ay - ny);
-  glVertex2f(bx - nx, by - ny);
-  glVertex2f(bx + nx, by + ny);
+  const Point q0{ax + nx, ay + ny}, q1{ax - nx, ay - ny}, q2{bx - nx, by - ny},
+      q3{bx + nx, by + ny};
+  out.add(q0, q1, q2, s.colour);
+  out.add(q0, q2, q3, s.colour);
 }
 
 void strokes(const std::vector<Stroke>& list) {
-  glBegin(GL_QUADS);
-  for (const Stroke& s : list) stroke(s);
-  glEnd();
+  Triangles t;
+  for (const Stroke& s : list) stroke(s, t);
+  t.draw();
 }
 
-// Large sprites go up in tiles no larger than the implementation allows.
-void sprite(const Sprite& s, bool mipmap) {
+// Large sprites go up in tiles no larger than the implementation allows. The
+// field (`cells`) is sampled nearest both ways: its texels are nodes, or
+// pixels already, and a colour is never averaged across a wall.
+void sprite(const Sprite& s, bool cells) {
   if (s.width <= 0 || s.height <= 0) return;
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
@@ -58,11 +96,8 @@ void sprite(const Sprite& s, bool mipmap) {
       GLuint tex = 0;
       glGenTextures(1, &tex);
       glBindTexture(GL_TEXTURE_2D, tex);
-      const bool minified = std::abs(sx) < 1 || std::abs(sy) < 1;
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, s.smooth ? GL_LINEAR : GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER,
-                      mipmap && minified ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
-      glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, mipmap && minified ? GL_TRUE : GL_FALSE);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, cells ? GL_NEAREST : GL_LINEAR);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
       glPixelStorei(GL_UNPACK_SKIP_PIXELS, i0);
@@ -99,13 +134,17 @@ void rect(const Rect& r, const Rgba& c) {
   glEnd();
 }
 
-void fan(const Fill& f) {
-  colour(f.colour);
-  glBegin(GL_TRIANGLE_FAN);
-  glVertex2f(f.centre.x, f.centre.y);
-  for (const Point& p : f.outline) glVertex2f(p.x, p.y);
-  if (!f.outline.empty()) glVertex2f(f.outline.front().x, f.outline.front().y);
-  glEnd();
+// A fan about the centre, closed.
+void fan(const Fill& f, Triangles& out) {
+  const std::size_t n = f.outline.size();
+  for (std::size_t k = 0; k < n && n > 1; ++k)
+    out.add(f.centre, f.outline[k], f.outline[(k + 1) % n], f.colour);
+}
+
+void fans(const std::vector<Fill>& list) {
+  Triangles t;
+  for (const Fill& f : list) fan(f, t);
+  t.draw();
 }
 
 }  // namespace
@@ -132,13 +171,17 @@ void drawList(const DrawList& list) {
   glEnable(GL_SCISSOR_TEST);
   glScissor(sx0, sy0, int(std::ceil(v.x1)) - sx0, int(std::ceil(v.y1)) - sy0);
   rect(v, list.viewportColour);
-  if (list.hasField) sprite(list.field, true);
+  if (list.hasField) {  // opaque: every texel lies on the lattice
+    glDisable(GL_BLEND);
+    sprite(list.field, true);
+    glEnable(GL_BLEND);
+  }
   strokes(list.fieldStrokes);
-  for (const Fill& f : list.fills) fan(f);
+  fans(list.fills);
   strokes(list.worldStrokes);
   glDisable(GL_SCISSOR_TEST);
 
-  for (const Fill& f : list.panels) fan(f);
+  fans(list.panels);
   strokes(list.overlayStrokes);
   for (const Sprite& s : list.overlays) sprite(s, false);
   glFinish();

@@ -223,13 +223,14 @@ struct Keys {
   detail::ElementColouring colouring;
 };
 
-Keys keysFor(const sim::Manager& m, const ViewOptions& v, const std::vector<float>* eps) {
+Keys keysFor(const sim::Manager& m, const ViewOptions& v, const std::vector<float>* eps,
+             const detail::FieldGrid& grid) {
   Keys k;
   const Field field = shownField(v, m.hasLattice());
   if (m.hasLattice() && field == Field::nodes) {
     k.keys.push_back(detail::nodeKindKey(m.lattice(), *eps));
   } else if (m.hasLattice() && field != Field::none) {
-    k.field = detail::sampleField(m.lattice(), *eps, field, v.range);
+    k.field = detail::sampleField(m.lattice(), *eps, field, v.range, grid);
     Key key;
     key.title = k.field->title;
     key.map = k.field->map;
@@ -239,6 +240,26 @@ Keys keysFor(const sim::Manager& m, const ViewOptions& v, const std::vector<floa
   k.colouring = detail::elementColouring(m, v, &elementKey);
   if (v.colorBy != ColorBy::none && !m.assembly().empty()) k.keys.push_back(std::move(elementKey));
   return k;
+}
+
+// Where the field is sampled: the lattice in view at the picture's pixels,
+// laid out before the keys (whose width depends on the values) take their
+// share. A view given its window fills the picture whatever the keys: there
+// the texels are its pixels.
+detail::FieldGrid fieldGridFor(const sim::Manager& m, const ViewOptions& v, int scale, bool fill,
+                               TextRenderer& text) {
+  if (!m.hasLattice()) return {};
+  const bool fitted = !v.region.has_value();
+  const Layout l = layOut(shownRegion(m, v), v.width, v.height, v.label, {}, &text, fill, fitted);
+  WorldMap world = l.world;
+  world.px0 *= scale;
+  world.py0 *= scale;
+  world.pixelsPerUnit *= scale;
+  const float f = float(scale);
+  return detail::viewGrid(
+      m.lattice(), world,
+      {l.viewport.x0 * f, l.viewport.y0 * f, l.viewport.x1 * f, l.viewport.y1 * f},
+      fill && !fitted);
 }
 
 }  // namespace
@@ -321,8 +342,9 @@ DrawList build(const sim::Manager& m, const ViewOptions& v, int scale, bool fill
   TextRenderer& text = sharedTextRenderer();
   const Field field = shownField(v, m.hasLattice());
   std::vector<float> eps;
-  if (m.hasLattice()) eps = detail::solidRatios(m.lattice());
-  const Keys keys = keysFor(m, v, &eps);
+  if (m.hasLattice() && detail::usesSolidRatios(field, v)) eps = detail::solidRatios(m.lattice());
+  const detail::FieldGrid grid = fieldGridFor(m, v, scale, fill, text);
+  const Keys keys = keysFor(m, v, &eps, grid);
   const Layout l = layOut(shownRegion(m, v), v.width, v.height, v.label, keys.keys, &text, fill,
                           !v.region.has_value());
   const float f = float(scale);
@@ -347,8 +369,8 @@ DrawList build(const sim::Manager& m, const ViewOptions& v, int scale, bool fill
 
   if (m.hasLattice() && field != Field::none) {
     list.hasField = true;
-    list.field =
-        detail::fieldSprite(m.lattice(), eps, field, keys.field ? &*keys.field : nullptr, world);
+    list.field = detail::fieldSprite(m.lattice(), eps, field, keys.field ? &*keys.field : nullptr,
+                                     grid, world);
   }
   detail::addGuideLines(v, world, list.viewport, f, list.fieldStrokes);
   if (m.hasLattice()) {
@@ -402,8 +424,9 @@ DrawList buildView(const sim::Manager& m, const ViewOptions& v, int scale) {
 std::array<double, 2> worldToImage(const sim::Manager& m, const ViewOptions& v, double x,
                                    double y) {
   std::vector<float> eps;
-  if (m.hasLattice()) eps = detail::solidRatios(m.lattice());
-  const Keys keys = keysFor(m, v, &eps);
+  if (m.hasLattice() && detail::usesSolidRatios(shownField(v, true), v))
+    eps = detail::solidRatios(m.lattice());
+  const Keys keys = keysFor(m, v, &eps, fieldGridFor(m, v, 1, false, sharedTextRenderer()));
   const Layout l = layOut(shownRegion(m, v), v.width, v.height, v.label, keys.keys,
                           &sharedTextRenderer(), false);
   const WorldMap& w = l.world;

@@ -55,16 +55,42 @@ inline constexpr Rgb kWallColour{89, 89, 89};  // non-fluid nodes under a scalar
 // The solid ratio of each interior node (row-major from (0, 0)), from the
 // lattice's list of covered cells.
 std::vector<float> solidRatios(const lb::Lattice& lattice);
+// Whether a picture of `field` under `v` reads them (a pass over the whole
+// lattice, which a frame of the speed alone does without).
+bool usesSolidRatios(Field field, const ViewOptions& v);
 Key nodeKindKey(const lb::Lattice& lattice, const std::vector<float>& eps);
-// sampleField with the solid ratios already at hand (needed for Field::solid).
+
+// The nodes a field is sampled at, one per texel: texel column a shows node
+// col[a], row b node row[b]; the texels tile the world rectangle
+// {x0 y0 x1 y1} evenly, all on the lattice.
+struct FieldGrid {
+  std::vector<int> col, row;
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  int width() const { return int(col.size()); }
+  int height() const { return int(row.size()); }
+};
+// Every node of the lattice.
+FieldGrid wholeLattice(const lb::Lattice& lattice);
+// What a view shows of the lattice in `viewport` (buffer pixels): where a node
+// covers a pixel or more, the nodes in view; else, with `pixels` (the mapping
+// is the picture's own), one texel per pixel whose centre lies on the
+// lattice, the node under that centre, or (a mapping the picture's may fall
+// short of) texels of about a pixel tiling the lattice in view, each the node
+// under its centre. Either way no more texels than pixels or nodes in view.
+FieldGrid viewGrid(const lb::Lattice& lattice, const WorldMap& world, const Rect& viewport,
+                   bool pixels);
+
+// sampleField at a grid's nodes, with the solid ratios already at hand
+// (needed for Field::solid); FieldValues' nx, ny are the grid's.
 FieldValues sampleField(const lb::Lattice& lattice, const std::vector<float>& eps, Field field,
-                        const std::optional<std::array<double, 2>>& range);
+                        const std::optional<std::array<double, 2>>& range, const FieldGrid& grid);
 
 Window latticeWindow(const lb::Lattice& lattice);
 
-// The lattice layer: one texel per node.
+// The lattice layer: one texel per grid point (values sampled at `grid`, or
+// null for Field::nodes).
 Sprite fieldSprite(const lb::Lattice& lattice, const std::vector<float>& eps, Field field,
-                   const FieldValues* values, const WorldMap& world);
+                   const FieldValues* values, const FieldGrid& grid, const WorldMap& world);
 // Velocity arrows on a grid about `spacing` pixels apart, and streamlines,
 // over the part of the lattice in the window `shown`; neither enters cells more
 // than half covered by a solid. An arrow's length is its speed over

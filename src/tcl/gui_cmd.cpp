@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <string>
 
+#include "remedy.hpp"
+#include "sandflow/lb/lattice.hpp"
 #include "sandflow/render/scene_builder.hpp"
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/picture.hpp"
@@ -102,10 +104,9 @@ bool addOverlay(Tcl_Interp* interp, Tcl_Obj* items, const render::WorldWindow& w
   return true;
 }
 
-// The frame's draw list: built anew, or with `reuse` the last one when it was
-// built at this size over this region (only the overlay changed).
-bool frameList(Tcl_Interp* interp, Session& s, const render::ViewOptions& v, bool reuse,
-               render::DrawList& list) {
+// The frame's draw list, s.viewList: built anew, or with `reuse` the last one
+// when it was built at this size over this region (only the overlay changed).
+bool frameList(Tcl_Interp* interp, Session& s, const render::ViewOptions& v, bool reuse) {
   const bool same =
       reuse && s.viewList && s.viewList->width == v.width && s.viewList->height == v.height;
   if (!same) {
@@ -115,9 +116,15 @@ bool frameList(Tcl_Interp* interp, Session& s, const render::ViewOptions& v, boo
     });
     if (code != TCL_OK) return false;
   }
-  list = *s.viewList;
   return true;
 }
+
+// Strokes added to a kept list for one frame, taken off again after it.
+struct StrokesAdded {
+  std::vector<render::Stroke>& strokes;
+  const std::size_t before = strokes.size();
+  ~StrokesAdded() { strokes.resize(before); }
+};
 
 // ::sf::gui::draw W H REGION ?OVERLAY? ?REUSE? -> geometry: into the current
 // GL context.
@@ -131,8 +138,11 @@ int Draw(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (!frameOptions(interp, s, objv, v)) return TCL_ERROR;
   bool reuse = false;
   if (objc == 6 && !getBool(interp, objv[5], "reuse", reuse)) return TCL_ERROR;
-  render::DrawList list;
-  if (!frameList(interp, s, v, reuse, list)) return TCL_ERROR;
+  if (!frameList(interp, s, v, reuse)) return TCL_ERROR;
+  // The overlay goes onto the kept list for this frame: no copy of the list
+  // (its field alone is a texel per pixel of the view).
+  render::DrawList& list = *s.viewList;
+  const StrokesAdded overlay{list.worldStrokes};
   if (objc >= 5 && !addOverlay(interp, objv[4], list.world, 2.0f, list)) return TCL_ERROR;
   return guarded(interp, [&] {
     drawIntoCurrentContext(list);
@@ -305,6 +315,32 @@ int Progress(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
   return TCL_OK;
 }
 
+// ::sf::gui::statusinfo -> dict step time nodes mlups mach elements warnings:
+// what the status bar shows, as `sim info` has it, but with the Mach number
+// of the last step (which the step finds anyway) instead of a scan of the
+// lattice: a run's tick asks for it every frame, and on a 1024^2 lattice the
+// scan took as long as the frame.
+int StatusInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
+    return TCL_ERROR;
+  }
+  const sim::Manager& m = sessionOf(data).manager;
+  const bool lattice = m.hasLattice();
+  Tcl_Obj* warnings = Tcl_NewListObj(0, nullptr);
+  for (const sim::Warning& w : m.warnings())
+    Tcl_ListObjAppendElement(nullptr, warnings, newString(withRemedy(w.text, w.remedy)));
+  Tcl_SetObjResult(
+      interp, newDict({{"step", Tcl_NewWideIntObj(m.stepCount())},
+                       {"time", newDouble(m.time())},
+                       {"nodes", Tcl_NewWideIntObj(lattice ? Tcl_WideInt(m.lattice().nodes()) : 0)},
+                       {"mlups", newDouble(m.mlups())},
+                       {"mach", newDouble(lattice ? m.lattice().lastStepMach() : 0.0)},
+                       {"elements", Tcl_NewIntObj(m.assembly().bodies().size())},
+                       {"warnings", warnings}}));
+  return TCL_OK;
+}
+
 // ::sf::gui::running -> 1 while a run is in progress (its tick is serving events).
 int Running(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
@@ -325,6 +361,7 @@ void registerGuiCommands(Tcl_Interp* interp, Session* session) {
   Tcl_CreateObjCommand(interp, "::sf::gui::runtick", RunTick, session, nullptr);
   Tcl_CreateObjCommand(interp, "::sf::gui::runsample", RunSample, session, nullptr);
   Tcl_CreateObjCommand(interp, "::sf::gui::running", Running, session, nullptr);
+  Tcl_CreateObjCommand(interp, "::sf::gui::statusinfo", StatusInfo, session, nullptr);
   Tcl_CreateObjCommand(interp, "::sf::gui::progress", Progress, session, nullptr);
 }
 

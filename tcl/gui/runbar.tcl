@@ -13,8 +13,10 @@ namespace eval ::sf::gui::runbar {
     variable run -1            ;# the run the tick last served
     variable pause 0           ;# Pause pressed: the tick breaks the run
     variable nextFrame 0       ;# clock milliseconds when the next redraw is due
-    variable budget 0.05       ;# the view's own share of a run's time: a frame also slows the
-                               ;# steps after it (caches refilled), so 5% keeps the total under 10%
+    variable budget 0.08       ;# the view's own share of a run's time: its frames sample the
+                               ;# view's pixels, not the lattice, and hardly slow the steps after
+                               ;# them; the tick's other work comes on top (10% in all)
+    variable longest 1000.0    ;# milliseconds: frames are never further apart, whatever they cost
     variable frameCost {}      ;# milliseconds each redraw took (the last 50)
     variable progress 0
     variable text ""           ;# status line
@@ -44,7 +46,7 @@ proc ::sf::gui::runbar::create {f} {
     ::sf::gui::tip $f.pause "Pause a run, whoever started it (Esc / F6)"
     ::sf::gui::tip $f.step "One step (F7)"
     ::sf::gui::tip $f.reset "Empty the scene: reset"
-    ::sf::gui::tip $f.fps "How often the view redraws while a run goes on (frames are skipped if drawing would take more than 10% of the run)"
+    ::sf::gui::tip $f.fps "How often the view redraws while a run goes on (frames are spaced out where drawing would take more than 8% of the run, but come at least once a second)"
     ::sf::gui::tip $f.spf "Redraw every this many steps instead (0: by the frame rate)"
     $f.pause state disabled
     ::sf::gui::runtick ::sf::gui::runbar::tick 50
@@ -107,6 +109,7 @@ proc ::sf::gui::runbar::tick {} {
     variable fps
     variable nextFrame
     variable budget
+    variable longest
     variable frameCost
     variable stepsPerFrame
     variable lastFrameStep
@@ -145,19 +148,25 @@ proc ::sf::gui::runbar::tick {} {
         set t0 [clock microseconds]
         set progress [expr {$total > 0 ? double($done) / $total : 0.0}]
         ::sf::gui::view::draw
-        # `sim info` scans the lattice (Mach, mass): once a frame, shared.
-        set info [sim info]
+        # Not `sim info`, whose Mach number scans the lattice (as long as the
+        # frame on a large one): the last step's.
+        set info [::sf::gui::statusinfo]
         ::sf::gui::runbar::update $info
         # The frame rate asked for, unless frames cost more than the budget's
-        # share of the run: a large lattice redraws less often, never slowing
-        # the run by more than the budget. The next frame is timed from this
-        # one's end, also across runs.
+        # share of the run: then they are spaced out, but never more than
+        # `longest` apart (a run always shows it goes on). The cost is the
+        # median of the last five frames', so that one frame slowed by another
+        # process does not hold the next ones back. The next frame is timed
+        # from this one's end, also across runs.
         set end [clock microseconds]
         set cost [expr {($end - $t0) / 1000.0}]
         set frameCost [lrange [lappend frameCost $cost] end-49 end]
+        set recent [lsort -real [lrange $frameCost end-4 end]]
+        set typical [lindex $recent [expr {[llength $recent] / 2}]]
         # A frame rate being typed (not a number yet) counts as the default.
         set rate [expr {[string is double -strict $fps] ? max(1, min(60, $fps)) : 20}]
-        set period [expr {max(1000.0 / $rate, $cost * (1 - $budget) / $budget)}]
+        set period [expr {min($longest,
+                              max(1000.0 / $rate, $typical * (1 - $budget) / $budget))}]
         set nextFrame [expr {$end / 1000 + round($period)}]
     }
     # Serve the window: clicks, keys, typing at the console, `after` scripts.

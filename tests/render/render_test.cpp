@@ -228,6 +228,83 @@ TEST(SceneBuilder, RefusesWhatShowsNothing) {
   EXPECT_THROW(checkOptions(v), Error);
 }
 
+// Each texel of a picture's field against the node under its centre: the
+// colour of that node's value in `whole` (the field sampled at every node,
+// under the same fixed range), within the colour table's rounding.
+void expectTexelsShowTheirNodes(const sim::Manager& m, const DrawList& list,
+                                const FieldValues& whole) {
+  const Sprite& s = list.field;
+  const WorldWindow& w = list.world;
+  int wrong = 0;
+  for (int b = 0; b < s.height; ++b)
+    for (int a = 0; a < s.width; ++a) {
+      const double px = s.x0 + (a + 0.5) * (s.x1 - s.x0) / s.width;
+      const double py = s.y0 + (b + 0.5) * (s.y1 - s.y0) / s.height;
+      const auto node = m.lattice().nodeAt(
+          Vec2(w.wx0 + (px - w.px0) / w.pixelsPerUnit, w.wy0 + (py - w.py0) / w.pixelsPerUnit));
+      ASSERT_TRUE(node) << a << " " << b;
+      const auto [i, j] = *node;
+      const Rgb want = whole.map(whole.value[std::size_t(j) * whole.nx + i]);
+      const std::uint8_t* got = &s.rgba[4 * (std::size_t(b) * s.width + a)];
+      wrong += std::abs(got[0] - want.r) > 3 || std::abs(got[1] - want.g) > 3 ||
+               std::abs(got[2] - want.b) > 3 || got[3] != 255;
+    }
+  EXPECT_EQ(wrong, 0);
+}
+
+TEST(SceneBuilder, ALargeLatticeIsSampledAtThePicturesPixels) {
+  // 1024^2 nodes in a 240 x 200 picture: a texel per pixel (the node under
+  // its centre), not one per node.
+  sim::Manager m;
+  m.createLattice(test::periodicSquare(1.0, 1024, 0.01));
+  m.lattice().initialize([](const Vec2& x, double& rho, Vec2& u) {
+    rho = 1;
+    u = Vec2(0.01 * std::sin(6.283 * x.y()), 0.01 * std::cos(6.283 * x.x()));
+  });
+  ViewOptions v;
+  v.width = 240;
+  v.height = 200;
+  v.range = std::array{0.0, 0.015};
+  const DrawList list = buildScene(m, v, 1);
+  ASSERT_TRUE(list.hasField);
+  EXPECT_LE(list.field.width, v.width);
+  EXPECT_LE(list.field.height, v.height);
+  EXPECT_GE(list.field.height, int(list.viewport.y1 - list.viewport.y0) - 1);
+  expectTexelsShowTheirNodes(m, list, sampleField(m.lattice(), Field::velocity, v.range));
+  // The workbench's view of a window it holds: its texels are its pixels,
+  // each the node under the pixel's centre.
+  v.region = std::array{0.1, 0.2, 0.9, 0.7};
+  const DrawList view = buildView(m, v, 1);
+  EXPECT_EQ(view.field.width, v.width);  // the window, widened to the view's shape, is all lattice
+  EXPECT_EQ(view.field.height, v.height);
+  EXPECT_FLOAT_EQ(view.field.x0, 0.0f);
+  EXPECT_FLOAT_EQ(view.field.y1, float(v.height));
+  expectTexelsShowTheirNodes(m, view, sampleField(m.lattice(), Field::velocity, v.range));
+}
+
+TEST(SceneBuilder, AZoomedFieldIsTheNodesInView) {
+  // A window across the periodic seam x = 0: vorticity (central differences
+  // that wrap) from the nodes in view and their neighbours only, the same as
+  // from the whole lattice.
+  sim::Manager m;
+  m.createLattice(test::periodicSquare(1.0, 64, 0.01));
+  m.lattice().initialize([](const Vec2& x, double& rho, Vec2& u) {
+    rho = 1;
+    u = Vec2(0.01 * std::sin(6.283 * x.y()) * x.x(), 0.01 * std::cos(6.283 * x.x()));
+  });
+  ViewOptions v;
+  v.field = Field::vorticity;
+  v.width = 300;
+  v.height = 300;
+  v.region = std::array{-0.05, 0.3, 0.25, 0.6};
+  v.range = std::array{-0.5, 0.5};
+  const DrawList list = buildScene(m, v, 2);
+  // Nodes 0..15 across (x < 0.25), 19..38 up: one texel each.
+  EXPECT_EQ(list.field.width, 16);
+  EXPECT_EQ(list.field.height, 20);
+  expectTexelsShowTheirNodes(m, list, sampleField(m.lattice(), Field::vorticity, v.range));
+}
+
 // Lattice speed h/dt of a scene.
 double latticeSpeed(const sim::Manager& m) {
   return m.lattice().params().h / m.lattice().params().dt;

@@ -18,7 +18,8 @@ struct Point {
 };
 
 // An RGBA image stretched over a pixel rectangle: the lattice field (one texel
-// per node) or a pre-rasterised overlay (text, the colour bar).
+// per node in view, or per pixel where nodes are smaller) or a pre-rasterised
+// overlay (text, the colour bar).
 struct Sprite {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgba;  // rows bottom-up, 4 bytes per texel
