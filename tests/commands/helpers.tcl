@@ -115,3 +115,81 @@ proc scriptFile {name body} {
     close $f
     return $path
 }
+
+# -match approx: the values a test returns, compared with the expected ones
+# word by word, so that a failure prints both. An expected number matches a
+# number within a relative tolerance (as near: 1e-12 unless the expected list
+# ends with "within TOL"); a bound (>X, <X, >=X, <=X, or two of them as in
+# >0.25<0.42) matches a number inside it; any other word matches a word that
+# equals it or that it matches as a glob pattern; lists are compared word by
+# word, nested lists too.
+proc approxMatch {expected actual} {
+    set tolerance 1e-12
+    if {[llength $expected] >= 2 && [lindex $expected end-1] eq "within"} {
+        set tolerance [lindex $expected end]
+        set expected [lrange $expected 0 end-2]
+    }
+    return [approxWord $expected $actual $tolerance]
+}
+proc approxWord {expected actual tolerance} {
+    if {$expected eq $actual} {return 1}
+    set number {[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?}
+    if {[string is double -strict $expected]} {
+        # (a NaN is a word that matches no number)
+        return [expr {[string is double -strict $actual] && ![catch {
+            expr {abs($actual - $expected) <= $tolerance * max(1.0, abs($actual), abs($expected))}
+        } ok] && $ok}]
+    }
+    if {[regexp "^(>=|<=|>|<)($number)(?:(>=|<=|>|<)($number))?\$" $expected \
+             -> op1 bound1 op2 bound2]} {
+        if {![string is double -strict $actual]
+                || [catch {expr "\$actual $op1 \$bound1"} ok] || !$ok} {return 0}
+        return [expr {$op2 eq "" || (![catch {expr "\$actual $op2 \$bound2"} ok] && $ok)}]
+    }
+    if {![catch {llength $expected} n] && $n > 1
+            && ![catch {llength $actual} m] && $m == $n} {
+        set all 1
+        foreach e $expected a $actual {
+            if {![approxWord $e $a $tolerance]} {set all 0; break}
+        }
+        if {$all} {return 1}
+    }
+    return [string match $expected $actual]
+}
+customMatch approx approxMatch
+
+# Where two values differ: {} when they are equal, else {path first second}
+# for each differing word, the path made of list indices (or keys, where both
+# are key-value lists with the same keys). A test that shows that something
+# changed nothing returns this, expecting {}: a failure names what changed.
+proc differences {a b {path {}}} {
+    if {$a eq $b} {return {}}
+    if {[catch {llength $a} na] || [catch {llength $b} nb] || $na != $nb || $na < 2} {
+        return [list [list $path $a $b]]
+    }
+    set keyed [expr {$na % 2 == 0}]
+    if {$keyed} {
+        foreach {ka -} $a {kb -} $b {
+            if {$ka ne $kb} {set keyed 0; break}
+        }
+    }
+    set out {}
+    if {$keyed} {
+        foreach {key va} $a {- vb} $b {
+            lappend out {*}[differences $va $vb [concat $path [list $key]]]
+        }
+    } else {
+        for {set i 0} {$i < $na} {incr i} {
+            lappend out {*}[differences [lindex $a $i] [lindex $b $i] [concat $path $i]]
+        }
+    }
+    return $out
+}
+
+# "identical" when two byte strings are, else where they first differ.
+proc compareBytes {a b} {
+    if {$a eq $b} {return identical}
+    set n [expr {min([string length $a], [string length $b])}]
+    for {set i 0} {$i < $n && [string index $a $i] eq [string index $b $i]} {incr i} {}
+    return "differ from byte $i (lengths [string length $a] and [string length $b])"
+}
