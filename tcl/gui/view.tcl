@@ -51,7 +51,7 @@ proc ::sf::gui::view::create {path} {
         image create photo ::sf::gui::view::photo -width 800 -height 560
         label $path -image ::sf::gui::view::photo -borderwidth 0 -background #f0f0f0 \
             -width 800 -height 560
-        bind $path <Configure> {::sf::gui::view::redraw}
+        bind $path <Configure> {::sf::gui::view::resized}
     }
     set w $path
     $path configure -cursor crosshair
@@ -82,7 +82,27 @@ proc ::sf::gui::view::syncMenu {} {
 }
 
 proc ::sf::gui::view::glCreated {togl} {}
-proc ::sf::gui::view::glReshape {togl} { redraw }
+proc ::sf::gui::view::glReshape {togl} { resized }
+
+# The widget resized (the window, a pane's sash, a scrollbar shown beside the
+# properties): a window held keeps its scale and its top-left corner, so
+# that the scene stays where it is on the screen; only the room at the right
+# and the bottom changes. A fitted view fits again.
+proc ::sf::gui::view::resized {} {
+    variable region
+    variable geometry
+    variable w
+    if {$region ne {} && $geometry ne {}} {
+        set s [dict get $geometry scale]
+        lassign [toWorld 0 0] x0 y1
+        set x1 [expr {$x0 + [winfo width $w] / $s}]
+        set y0 [expr {$y1 - [winfo height $w] / $s}]
+        set region [list $x0 $y0 $x1 $y1]
+        moved
+        return
+    }
+    redraw
+}
 proc ::sf::gui::view::glDisplay {togl} { draw 0 }
 
 # Schedules one redraw when the application is idle (many changes, one frame).
