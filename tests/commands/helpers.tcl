@@ -162,7 +162,7 @@ customMatch approx approxMatch
 # for each differing word, the path made of list indices (or keys, where both
 # are key-value lists with the same keys). A test that shows that something
 # changed nothing returns this, expecting {}: a failure names what changed.
-proc differences {a b {path {}}} {
+proc diffValues {a b {path {}}} {
     if {$a eq $b} {return {}}
     if {[catch {llength $a} na] || [catch {llength $b} nb] || $na != $nb || $na < 2} {
         return [list [list $path $a $b]]
@@ -176,11 +176,11 @@ proc differences {a b {path {}}} {
     set out {}
     if {$keyed} {
         foreach {key va} $a {- vb} $b {
-            lappend out {*}[differences $va $vb [concat $path [list $key]]]
+            lappend out {*}[diffValues $va $vb [concat $path [list $key]]]
         }
     } else {
         for {set i 0} {$i < $na} {incr i} {
-            lappend out {*}[differences [lindex $a $i] [lindex $b $i] [concat $path $i]]
+            lappend out {*}[diffValues [lindex $a $i] [lindex $b $i] [concat $path $i]]
         }
     }
     return $out
