@@ -292,7 +292,8 @@ proc ::sf::gui::deleteSelection {} {
     doAll "delete [llength $pairs]" $pairs
 }
 
-# Moves the selection by a world offset: one configure per element.
+# Moves the selection by a world offset: one configure per element, its
+# numbers at the gesture's precision (0.5, not 0.49989999999999996).
 proc ::sf::gui::moveSelection {dx dy} {
     variable selection
     set pairs {}
@@ -301,14 +302,16 @@ proc ::sf::gui::moveSelection {dx dy} {
         if {[dict get $info type] eq "wall"} {
             lassign [dict get $info from] ax ay
             lassign [dict get $info to] bx by
-            set to [list [expr {$ax + $dx}] [expr {$ay + $dy}] [expr {$bx + $dx}] [expr {$by + $dy}]]
+            set to [lmap c [list [expr {$ax + $dx}] [expr {$ay + $dy}] [expr {$bx + $dx}] [expr {$by + $dy}]] {
+                tools::tidy $c
+            }]
             lappend pairs [list \
                 [list element configure $id -from [lrange $to 0 1] -to [lrange $to 2 3]] \
                 [list element configure $id -from [dict get $info from] -to [dict get $info to]]]
         } else {
             lassign [dict get $info position] x y
             lappend pairs [list \
-                [list element configure $id -center [list [expr {$x + $dx}] [expr {$y + $dy}]]] \
+                [list element configure $id -center [list [tools::tidy [expr {$x + $dx}]] [tools::tidy [expr {$y + $dy}]]]] \
                 [list element configure $id -center [dict get $info position]]]
         }
     }
