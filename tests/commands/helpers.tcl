@@ -118,20 +118,25 @@ proc scriptFile {name body} {
 
 # -match approx: the values a test returns, compared with the expected ones
 # word by word, so that a failure prints both. An expected number matches a
-# number within a relative tolerance (as near: 1e-12 unless the expected list
-# ends with "within TOL"); a bound (>X, <X, >=X, <=X, or two of them as in
-# >0.25<0.42) matches a number inside it; any other word matches a word that
-# equals it or that it matches as a glob pattern; lists are compared word by
-# word, nested lists too.
+# number within a relative tolerance (near's: 1e-12, or TOL where the
+# expected list, or a list inside it, ends with "within TOL"); a bound (>X,
+# <X, >=X, <=X, or two of them as in >0.25<0.42) matches a number inside it;
+# "same" matches a pair {value reference} of numbers (or of lists of them)
+# that agree within the tolerance, for a reference known only at run time;
+# any other word matches a word that equals it or that it matches as a glob
+# pattern; lists are compared word by word, nested lists too.
 proc approxMatch {expected actual} {
-    set tolerance 1e-12
-    if {[llength $expected] >= 2 && [lindex $expected end-1] eq "within"} {
-        set tolerance [lindex $expected end]
-        set expected [lrange $expected 0 end-2]
-    }
-    return [approxWord $expected $actual $tolerance]
+    return [approxWord $expected $actual 1e-12]
 }
 proc approxWord {expected actual tolerance} {
+    if {![catch {llength $expected} n] && $n >= 2 && [lindex $expected end-1] eq "within"} {
+        set tolerance [lindex $expected end]
+        set expected [expr {$n == 3 ? [lindex $expected 0] : [lrange $expected 0 end-2]}]
+    }
+    if {$expected eq "same"} {
+        return [expr {![catch {llength $actual} m] && $m == 2
+                      && [nearWords [lindex $actual 0] [lindex $actual 1] $tolerance]}]
+    }
     if {$expected eq $actual} {return 1}
     set number {[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?}
     if {[string is double -strict $expected]} {
@@ -155,6 +160,21 @@ proc approxWord {expected actual tolerance} {
         if {$all} {return 1}
     }
     return [string match $expected $actual]
+}
+# 1 when two words are equal, or numbers within the tolerance, or lists of
+# the same length whose words are.
+proc nearWords {a b tolerance} {
+    if {$a eq $b} {return 1}
+    if {[string is double -strict $a] && [string is double -strict $b]} {
+        return [expr {![catch {
+            expr {abs($a - $b) <= $tolerance * max(1.0, abs($a), abs($b))}
+        } ok] && $ok}]
+    }
+    if {[catch {llength $a} na] || [catch {llength $b} nb] || $na != $nb || $na < 2} {return 0}
+    foreach x $a y $b {
+        if {![nearWords $x $y $tolerance]} {return 0}
+    }
+    return 1
 }
 customMatch approx approxMatch
 
