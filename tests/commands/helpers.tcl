@@ -119,18 +119,19 @@ proc scriptFile {name body} {
 # -match approx: the values a test returns, compared with the expected ones
 # word by word, so that a failure prints both. An expected number matches a
 # number within a relative tolerance (near's: 1e-12, or TOL where the
-# expected list, or a list inside it, ends with "within TOL"); a bound (>X,
+# expected list, or a list inside it, ends with "within TOL"; "by TOL" makes
+# it an absolute one, as for the levels of a colour); a bound (>X,
 # <X, >=X, <=X, or two of them as in >0.25<0.42) matches a number inside it;
 # "same" matches a pair {value reference} of numbers (or of lists of them)
 # that agree within the tolerance, for a reference known only at run time;
 # any other word matches a word that equals it or that it matches as a glob
 # pattern; lists are compared word by word, nested lists too.
 proc approxMatch {expected actual} {
-    return [approxWord $expected $actual 1e-12]
+    return [approxWord $expected $actual {within 1e-12}]
 }
 proc approxWord {expected actual tolerance} {
-    if {![catch {llength $expected} n] && $n >= 2 && [lindex $expected end-1] eq "within"} {
-        set tolerance [lindex $expected end]
+    if {![catch {llength $expected} n] && $n >= 2 && [lindex $expected end-1] in {within by}} {
+        set tolerance [lrange $expected end-1 end]
         set expected [expr {$n == 3 ? [lindex $expected 0] : [lrange $expected 0 end-2]}]
     }
     if {$expected eq "same"} {
@@ -140,10 +141,7 @@ proc approxWord {expected actual tolerance} {
     if {$expected eq $actual} {return 1}
     set number {[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?}
     if {[string is double -strict $expected]} {
-        # (a NaN is a word that matches no number)
-        return [expr {[string is double -strict $actual] && ![catch {
-            expr {abs($actual - $expected) <= $tolerance * max(1.0, abs($actual), abs($expected))}
-        } ok] && $ok}]
+        return [nearWords $actual $expected $tolerance]
     }
     if {[regexp "^(>=|<=|>|<)($number)(?:(>=|<=|>|<)($number))?\$" $expected \
              -> op1 bound1 op2 bound2]} {
@@ -151,7 +149,8 @@ proc approxWord {expected actual tolerance} {
                 || [catch {expr "\$actual $op1 \$bound1"} ok] || !$ok} {return 0}
         return [expr {$op2 eq "" || (![catch {expr "\$actual $op2 \$bound2"} ok] && $ok)}]
     }
-    if {![catch {llength $expected} n] && $n > 1
+    # (a list of one word is unwrapped too, where that changes it)
+    if {![catch {llength $expected} n] && ($n > 1 || ($n == 1 && [lindex $expected 0] ne $expected))
             && ![catch {llength $actual} m] && $m == $n} {
         set all 1
         foreach e $expected a $actual {
@@ -161,14 +160,15 @@ proc approxWord {expected actual tolerance} {
     }
     return [string match $expected $actual]
 }
-# 1 when two words are equal, or numbers within the tolerance, or lists of
-# the same length whose words are.
+# 1 when two words are equal, or numbers within the tolerance ({within
+# RELATIVE} or {by ABSOLUTE}), or lists of the same length whose words are.
 proc nearWords {a b tolerance} {
     if {$a eq $b} {return 1}
     if {[string is double -strict $a] && [string is double -strict $b]} {
-        return [expr {![catch {
-            expr {abs($a - $b) <= $tolerance * max(1.0, abs($a), abs($b))}
-        } ok] && $ok}]
+        lassign $tolerance kind t
+        set scale [expr {$kind eq "by" ? 1.0 : "max(1.0, abs(\$a), abs(\$b))"}]
+        # (a NaN is a word that matches no number)
+        return [expr {![catch {expr "abs(\$a - \$b) <= \$t * $scale"} ok] && $ok}]
     }
     if {[catch {llength $a} na] || [catch {llength $b} nb] || $na != $nb || $na < 2} {return 0}
     foreach x $a y $b {
