@@ -129,14 +129,14 @@ proc ::driver::keysymOf {char} {
     if {[dict exists $names $char]} { return [dict get $names $char] }
     return $char
 }
-# A command typed at the console's prompt and entered -> the console's log
-# after it. Waits for the prompt to come back (a command that runs serves events).
-proc ::driver::typeCommand {text} {
+# A command typed at the console's prompt and entered (Return; "" leaves it
+# typed). It runs as the Return key's binding: this returns when it has.
+proc ::driver::typeCommand {text {end Return}} {
     set W $::sf::gui::W(console)
     set t $W.text
     set r [::sf::gui::console::Real $W]
     $r mark set insert end-1c
-    typeInto $t $text
+    typeInto $t $text $end
 }
 
 # ---- menus and dialogs ---------------------------------------------------------------
