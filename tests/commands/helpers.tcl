@@ -124,8 +124,10 @@ proc scriptFile {name body} {
 # <X, >=X, <=X, or two of them as in >0.25<0.42) matches a number inside it;
 # "same" matches a pair {value reference} of numbers (or of lists of them)
 # that agree within the tolerance, for a reference known only at run time;
-# any other word matches a word that equals it or that it matches as a glob
-# pattern; lists are compared word by word, nested lists too.
+# {= VALUE} matches VALUE itself only (a string compared exactly, as
+# tcltest's exact matching would); any other word matches a word that equals
+# it or that it matches as a glob pattern; lists are compared word by word,
+# nested lists too.
 proc approxMatch {expected actual} {
     return [approxWord $expected $actual {within 1e-12}]
 }
@@ -133,6 +135,9 @@ proc approxWord {expected actual tolerance} {
     if {![catch {llength $expected} n] && $n >= 2 && [lindex $expected end-1] in {within by}} {
         set tolerance [lrange $expected end-1 end]
         set expected [expr {$n == 3 ? [lindex $expected 0] : [lrange $expected 0 end-2]}]
+    }
+    if {![catch {llength $expected} n] && $n == 2 && [lindex $expected 0] eq "="} {
+        return [expr {[lindex $expected 1] eq $actual}]
     }
     if {$expected eq "same"} {
         return [expr {![catch {llength $actual} m] && $m == 2
