@@ -4,7 +4,10 @@
 #include <chrono>
 #include <cmath>
 
+#include <omp.h>
+
 #include "contact_force.hpp"
+#include "element_sums.hpp"
 #include "integrate.hpp"
 #include "sandflow/core/error.hpp"
 
@@ -141,6 +144,60 @@ Vec2 Assembly::momentum() const {
   return p;
 }
 
+// The elements' own loads: the reference step's first pass (the gather
+// starts each element's sum with the same expression).
+void Assembly::ownLoads(const Vec2& gravity) {
+  Bodies& b = bodies_;
+  Vec2* __restrict f = b.force.data();
+  double* __restrict t = b.torque.data();
+  const Vec2 *applied = b.appliedForce.data(), *own = b.acceleration.data(),
+             *fluid = b.fluidForce.data(), *buoyancy = b.buoyancy.data();
+  const double *mass = b.mass.data(), *appliedTorque = b.appliedTorque.data(),
+               *fluidTorque = b.fluidTorque.data();
+  for (int s = 0; s < b.size(); ++s) {
+    f[s] = applied[s] + mass[s] * (gravity + own[s]) + fluid[s] + buoyancy[s];
+    t[s] = appliedTorque[s] + fluidTorque[s];
+  }
+}
+
+// Each element's own loads and then its contacts, one element at a time
+// (element_sums.hpp), in blocks of slots over the threads; returns the probe
+// (0 when every sum is finite).
+double Assembly::gatherSums(const Vec2& gravity) {
+  Bodies& b = bodies_;
+  const int n = b.size();
+  const ContactsByElement& by = contacts_.byElement(n);
+  const ContactList& l = contacts_.list();
+  const detail::SumInputs in{b.appliedForce.data(),
+                             b.acceleration.data(),
+                             b.fluidForce.data(),
+                             b.buoyancy.data(),
+                             b.mass.data(),
+                             b.appliedTorque.data(),
+                             b.fluidTorque.data(),
+                             gravity,
+                             by.start.data(),
+                             by.entry.data(),
+                             l.fx.data(),
+                             l.fy.data(),
+                             l.ta.data(),
+                             l.tb.data(),
+                             l.history[1 - l.current].touching.data(),
+                             b.force.data(),
+                             b.torque.data(),
+                             scratchTouch_.data()};
+  const int team = parallel::team(n, parallel::kIntegrateSlots, threads());
+  if (team == 1) return detail::sumElements(in, 0, n);
+  double probe = 0;
+#pragma omp parallel num_threads(team) reduction(+ : probe)
+  {
+    const int count = omp_get_num_threads(), me = omp_get_thread_num();
+    probe += detail::sumElements(in, int(std::int64_t(n) * me / count),
+                                 int(std::int64_t(n) * (me + 1) / count));
+  }
+  return probe;
+}
+
 void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocity) {
   Bodies& b = bodies_;
   const int n = b.size();
@@ -148,18 +205,7 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
   const std::vector<double>& omega = useHalfVelocity ? b.wHalf : b.w;
   Profile& profile = profile_.get();
   auto t0 = Clock::now();
-  {
-    Vec2* __restrict f = b.force.data();
-    double* __restrict t = b.torque.data();
-    const Vec2 *applied = b.appliedForce.data(), *own = b.acceleration.data(),
-               *fluid = b.fluidForce.data(), *buoyancy = b.buoyancy.data();
-    const double *mass = b.mass.data(), *appliedTorque = b.appliedTorque.data(),
-                 *fluidTorque = b.fluidTorque.data();
-    for (int s = 0; s < n; ++s) {
-      f[s] = applied[s] + mass[s] * (gravity + own[s]) + fluid[s] + buoyancy[s];
-      t[s] = appliedTorque[s] + fluidTorque[s];
-    }
-  }
+  if (referenceStep) ownLoads(gravity);
   t0 = profile.lap(Stage::demSums, t0);
   // Each contact's damping and normal-force mode for the step (law_columns.cpp).
   contacts_.prepareDamping(b, materials_, generation_, dt);
@@ -173,17 +219,25 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
                     formatNumber(maxOverlap_) +
                     " of the smaller one's size: reduce the timestep or stiffen the material");
 
-  scratchTouch_.assign(n, 0);  // for checkSpeeds
-  contacts_.sumOnto(b, scratchTouch_.data());
-  if (!bonds_.empty()) bonds_.addForces(b, time_, dt, vel, omega);
-  const Vec2* force = b.force.data();
-  const double* torque = b.torque.data();
-  // x - x is 0 for finite x and NaN otherwise: one branch-free pass, then the
-  // slot is looked for only when some force is not finite.
+  scratchTouch_.resize(std::size_t(n));  // for checkSpeeds
   double probe = 0;
-  for (int s = 0; s < n; ++s)
-    probe +=
-        (force[s].x() - force[s].x()) + (force[s].y() - force[s].y()) + (torque[s] - torque[s]);
+  if (referenceStep) {
+    std::fill(scratchTouch_.begin(), scratchTouch_.end(), 0);
+    contacts_.sumOnto(b, scratchTouch_.data());
+  } else {
+    probe = gatherSums(gravity);
+  }
+  if (!bonds_.empty()) bonds_.addForces(b, time_, dt, vel, omega);
+  if (referenceStep || !bonds_.empty()) {
+    const Vec2* force = b.force.data();
+    const double* torque = b.torque.data();
+    // x - x is 0 for finite x and NaN otherwise: one branch-free pass, then
+    // the slot is looked for only when some force is not finite.
+    probe = 0;
+    for (int s = 0; s < n; ++s)
+      probe +=
+          (force[s].x() - force[s].x()) + (force[s].y() - force[s].y()) + (torque[s] - torque[s]);
+  }
   profile.lap(Stage::demSums, t0);
   if (probe != 0 || std::isnan(probe))
     for (int s = 0; s < n; ++s)
@@ -195,13 +249,14 @@ void Assembly::computeForces(double dt, const Vec2& gravity, bool useHalfVelocit
 // Energy blow-up shows as an element in contact about to jump by more than
 // half its own size in one step (free flight may be that fast): stop before
 // moving anything.
-void Assembly::checkSpeeds(double dt) const {
+void Assembly::checkSpeeds(double dt, const char* only) const {
   const Bodies& b = bodies_;
   const char* touching = scratchTouch_.data();  // marked by computeForces
   const Vec2 *v = b.v.data(), *force = b.force.data();
   const double *w = b.w.data(), *torque = b.torque.data(), *mass = b.mass.data(),
                *inertia = b.inertia.data(), *reach = b.reach.data(), *extent = b.extent.data();
   for (int s = 0; s < b.size(); ++s) {
+    if (only && !only[s]) continue;
     if (b.invMass[s] == 0 && b.invInertia[s] == 0) continue;
     if (!touching[s]) {
       // Free flight may be fast, but not beyond what a double holds (a
@@ -240,9 +295,9 @@ void Assembly::checkSpeeds(double dt) const {
 
 detail::Motion Assembly::motion() {
   Bodies& b = bodies_;
-  return {b.x.data(),    b.v.data(),       b.vHalf.data(), b.angle.data(),
-          b.w.data(),    b.wHalf.data(),   b.force.data(), b.torque.data(),
-          b.mass.data(), b.inertia.data(), b.hold.data(),  b.started.data()};
+  return {b.x.data(),     b.v.data(),       b.vHalf.data(),  b.angle.data(), b.w.data(),
+          b.wHalf.data(), b.force.data(),   b.torque.data(), b.mass.data(),  b.inertia.data(),
+          b.hold.data(),  b.started.data(), acc_.data(),     alpha_.data()};
 }
 
 // Verlet kicks before the forces with the last step's: an element without a
@@ -312,10 +367,17 @@ void Assembly::step(double dt, const Vec2& gravity) {
   profile.lap(Stage::demPairs, t0);
   spareForce_.resize(std::size_t(n)), spareTorque_.resize(std::size_t(n));
   b.force.swap(spareForce_), b.torque.swap(spareTorque_);
+  acc_.resize(std::size_t(n)), alpha_.resize(std::size_t(n)), suspect_.resize(std::size_t(n));
   try {
     computeForces(dt, gravity, integrator != Integrator::euler);  // records its stages
     t0 = Clock::now();
-    checkSpeeds(dt);
+    if (referenceStep) {
+      checkSpeeds(dt, nullptr);
+    } else {
+      const detail::SpeedInputs in{b.invMass.data(), b.invInertia.data(),  b.reach.data(),
+                                   b.extent.data(),  scratchTouch_.data(), suspect_.data()};
+      if (detail::accelerate(motion(), in, n, dt, threads())) checkSpeeds(dt, suspect_.data());
+    }
   } catch (...) {
     b.force.swap(spareForce_), b.torque.swap(spareTorque_);
     if (movesFirst) b.x = x0, b.angle = a0, b.vHalf = v0, b.wHalf = w0;
@@ -323,7 +385,10 @@ void Assembly::step(double dt, const Vec2& gravity) {
   }
   commitStep();
   plates_.servo(b, materials_, contacts_.list(), generation_, dt);
-  detail::postForce(integrator, motion(), n, dt, threads());
+  if (referenceStep)
+    detail::postForce(integrator, motion(), n, dt, threads());
+  else
+    detail::postForceFused(integrator, motion(), n, dt, threads());
   time_ += dt;
   if (!sources_.empty())
     sources_.spawn(b, time_, [this](ElementDef d) { return add(std::move(d)); });

@@ -189,6 +189,7 @@ void ContactSet::update(const Bodies& bodies, const MaterialTable& materials,
       ++k;
     }
   std::swap(list_, next);
+  ++listVersion_;
   viewValid_ = false;
   lawsAt_ = generation;
   slotsMoved_ = false;
@@ -234,6 +235,12 @@ std::size_t ContactSet::evaluate(const Bodies& b, const std::vector<Vec2>& vel,
     }
   }
   return bad;
+}
+
+const ContactsByElement& ContactSet::byElement(int n) {
+  if (byElementVersion_ != listVersion_ || byElement_.start.size() != std::size_t(n) + 1)
+    byElement_.build(list_, n), byElementVersion_ = listVersion_;
+  return byElement_;
 }
 
 // The sums, in list order (the same bits for any thread count). Without a

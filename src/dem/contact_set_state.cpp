@@ -33,6 +33,7 @@ void ContactSet::load(ByteReader& in, const Bodies& b, const MaterialTable& mate
   const std::size_t n = std::size_t(b.size());
   in.expectTag("CONT");
   ContactList& l = list_;
+  ++listVersion_;
   std::vector<int> a, bb, idA, idB;
   std::vector<std::uint8_t> discs;
   in.get(a, "contacts"), in.get(bb, "contacts"), in.get(idA, "contacts"), in.get(idB, "contacts");

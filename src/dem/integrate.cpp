@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "sandflow/core/kernel_isa.hpp"
 #include "sandflow/core/parallel.hpp"
 
 namespace sf::dem::detail {
@@ -64,6 +65,94 @@ void advanceRange(const Motion& in, int begin, int end, double dt) {
   }
 }
 
+// The kicks and drift with the accelerations of accelerate(): held degrees
+// of freedom keep their velocity (a select, not a branch, so that the loop
+// is one vector pass down the columns).
+template <Integrator scheme>
+SF_KERNEL_CLONES void advanceFusedRange(const Motion& in, int begin, int end, double dt) {
+  double* __restrict x = in.x[0].data();  // Vec2 is two packed doubles
+  double* __restrict v = in.v[0].data();
+  double* __restrict vHalf = in.vHalf[0].data();
+  double* __restrict angle = in.angle;
+  double* __restrict w = in.w;
+  double* __restrict wHalf = in.wHalf;
+  const double* __restrict acc = in.acc[0].data();
+  const double* __restrict alpha = in.alpha;
+  const std::uint8_t* __restrict hold = in.hold;
+  const double half = 0.5 * dt;
+#pragma omp simd
+  for (int s = begin; s < end; ++s) {
+    const std::uint8_t h = hold[s];
+    const double gx = acc[2 * s], gy = acc[2 * s + 1], ga = alpha[s];  // loaded either way
+    const double ax = h & holdX ? 0.0 : gx, ay = h & holdY ? 0.0 : gy;
+    const double al = h & holdRotation ? 0.0 : ga;
+    if constexpr (scheme == Integrator::central) {
+      const double vx = vHalf[2 * s] + dt * ax, vy = vHalf[2 * s + 1] + dt * ay;
+      const double wh = wHalf[s] + dt * al;
+      vHalf[2 * s] = vx, vHalf[2 * s + 1] = vy, wHalf[s] = wh;
+      x[2 * s] += dt * vx, x[2 * s + 1] += dt * vy;
+      angle[s] += dt * wh;
+      v[2 * s] = vx + half * ax, v[2 * s + 1] = vy + half * ay;
+      w[s] = wh + half * al;
+    } else if constexpr (scheme == Integrator::euler) {
+      const double vx = v[2 * s] + dt * ax, vy = v[2 * s + 1] + dt * ay;
+      const double wn = w[s] + dt * al;
+      v[2 * s] = vx, v[2 * s + 1] = vy, w[s] = wn;
+      x[2 * s] += dt * vx, x[2 * s + 1] += dt * vy;
+      angle[s] += dt * wn;
+    } else {
+      v[2 * s] = vHalf[2 * s] + half * ax, v[2 * s + 1] = vHalf[2 * s + 1] + half * ay;
+      w[s] = wHalf[s] + half * al;
+    }
+  }
+}
+
+SF_KERNEL_CLONES bool sieveRange(const Motion& m, const SpeedInputs& in, int begin, int end,
+                                 double dt) {
+  const double* __restrict x = m.x[0].data();
+  const double* __restrict v = m.v[0].data();
+  const double* __restrict angle = m.angle;
+  const double* __restrict w = m.w;
+  const double* __restrict f = m.force[0].data();
+  const double* __restrict torque = m.torque;
+  const double* __restrict mass = m.mass;
+  const double* __restrict inertia = m.inertia;
+  double* __restrict acc = m.acc[0].data();
+  double* __restrict alpha = m.alpha;
+  const double* __restrict invMass = in.invMass;
+  const double* __restrict invInertia = in.invInertia;
+  const double* __restrict reach = in.reach;
+  const double* __restrict extent = in.extent;
+  const char* __restrict touching = in.touching;
+  char* __restrict suspect = in.suspect;
+  int any = 0;
+#pragma omp simd reduction(| : any)
+  for (int s = begin; s < end; ++s) {
+    const double ax = f[2 * s] / mass[s], ay = f[2 * s + 1] / mass[s];
+    const double al = torque[s] / inertia[s];
+    acc[2 * s] = ax, acc[2 * s + 1] = ay, alpha[s] = al;
+    const double vx = v[2 * s], vy = v[2 * s + 1], ws = w[s];
+    // In contact: |v + dt a| + |w + dt alpha| reach, bounded term by term.
+    const double bound = (std::abs(vx) + std::abs(dt * ax) + std::abs(vy) + std::abs(dt * ay) +
+                          (std::abs(ws) + std::abs(dt * al)) * reach[s]) *
+                         dt;
+    const bool slowEnough = bound <= 0.5 * extent[s] * (1 - 1e-9);
+    // In free flight: where it goes is finite (held or not: a held degree
+    // of freedom that stays put is finite too).
+    const double vfx = vx + dt * ax, vfy = vy + dt * ay, wf = ws + dt * al;
+    const double probe = (vfx - vfx) + (vfy - vfy) + (wf - wf) +
+                         ((x[2 * s] + dt * vfx) - (x[2 * s] + dt * vfx)) +
+                         ((x[2 * s + 1] + dt * vfy) - (x[2 * s + 1] + dt * vfy)) +
+                         ((angle[s] + dt * wf) - (angle[s] + dt * wf));
+    const bool finite = probe == 0;
+    const bool fixed = invMass[s] == 0 && invInertia[s] == 0;
+    const bool ok = fixed || (touching[s] ? slowEnough : finite);
+    suspect[s] = !ok;
+    any |= !ok;
+  }
+  return any != 0;
+}
+
 // Runs range(m, begin, end, dt) over [0, n) in chunks, one per thread. Below
 // a few thousand slots a parallel region costs more than it saves.
 template <class Range>
@@ -88,6 +177,31 @@ void startCentral(const Motion& m, int n, double dt) {
 }
 
 }  // namespace
+
+bool accelerate(const Motion& m, const SpeedInputs& in, int n, double dt, int threads) {
+  const int t = parallel::team(n, parallel::kIntegrateSlots, threads);
+  if (t == 1) return sieveRange(m, in, 0, n, dt);
+  int any = 0;
+#pragma omp parallel num_threads(t) reduction(| : any)
+  {
+    const int count = omp_get_num_threads(), me = omp_get_thread_num();
+    any |= sieveRange(m, in, int(std::int64_t(n) * me / count),
+                      int(std::int64_t(n) * (me + 1) / count), dt);
+  }
+  return any != 0;
+}
+
+void postForceFused(Integrator scheme, const Motion& m, int n, double dt, int threads) {
+  switch (scheme) {
+    case Integrator::central:
+      if (anyUnstarted(m, n)) startCentral(m, n, dt);
+      return overSlots(advanceFusedRange<Integrator::central>, m, n, dt, threads);
+    case Integrator::euler:
+      return overSlots(advanceFusedRange<Integrator::euler>, m, n, dt, threads);
+    case Integrator::verlet:
+      return overSlots(advanceFusedRange<Integrator::verlet>, m, n, dt, threads);
+  }
+}
 
 void changeStep(Integrator scheme, const Motion& m, int n, double from, double to) {
   if (scheme != Integrator::central) return;  // the others keep v(t)

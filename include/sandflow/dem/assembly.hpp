@@ -104,6 +104,10 @@ class Assembly {
   // false: every pair one by one, none in the vector pass (a check that both
   // give the same bits; takes effect at the next pair build).
   bool vectorPass = true;
+  // true: the step as it was before the per-element gather and the fused
+  // integration (the serial sums down the contact list, the checks and
+  // kicks slot by slot): the slow reference the tests compare the step with.
+  bool referenceStep = false;
 
   // The candidate pairs and contacts as of the last step (made on demand).
   const std::vector<Contact>& contacts() const { return contacts_.view(); }
@@ -161,7 +165,10 @@ class Assembly {
   // The step's stages (step() lists them).
   void startForces(double dt, const Vec2& gravity);
   void computeForces(double dt, const Vec2& gravity, bool useHalfVelocity);
-  void checkSpeeds(double dt) const;
+  void ownLoads(const Vec2& gravity);
+  double gatherSums(const Vec2& gravity);
+  // Every slot, or those marked in `only` (detail::accelerate's suspects).
+  void checkSpeeds(double dt, const char* only) const;
   // The stiffness criticalTimestep takes for a slot's material (Hertz: at an
   // overlap of 1% of the element's size).
   double stiffestContact(int slot) const;
@@ -185,6 +192,11 @@ class Assembly {
   mutable double critical_ = 0;
   mutable TimestepLimits limits_{};
   std::vector<char> scratchTouch_;  // per element: in contact this step (computeForces)
+  // The step's accelerations and the slots the speed check must look at
+  // (detail::accelerate).
+  std::vector<Vec2> acc_;
+  std::vector<double> alpha_;
+  std::vector<char> suspect_;
   // The step computes its forces into these and swaps them in, so that a
   // step that fails leaves the last step's forces (Verlet kicks with them).
   std::vector<Vec2> spareForce_;

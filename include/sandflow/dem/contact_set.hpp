@@ -14,6 +14,7 @@
 #include "sandflow/dem/bodies.hpp"
 #include "sandflow/dem/contact_damping.hpp"
 #include "sandflow/dem/contact_list.hpp"
+#include "sandflow/dem/contacts_by_element.hpp"
 #include "sandflow/dem/dess.hpp"
 #include "sandflow/dem/material.hpp"
 
@@ -61,8 +62,12 @@ class ContactSet {
   std::size_t evaluate(const Bodies& b, const std::vector<Vec2>& v, const std::vector<double>& w,
                        double dt, double maxOverlap, int threads);
   // Adds the evaluated forces and torques to the elements', in list order,
-  // and marks the elements in contact in `touching` (one per slot).
+  // and marks the elements in contact in `touching` (one per slot): one
+  // serial pass down the list, the reference for the step's gather.
   void sumOnto(Bodies& b, char* touching) const;
+  // Each of n slots' contacts in list order (for the gather), indexed afresh
+  // after each pair build or load.
+  const ContactsByElement& byElement(int n);
   // The step succeeded: its history stands.
   void commit() { list_.current = 1 - list_.current, viewValid_ = false; }
 
@@ -76,7 +81,7 @@ class ContactSet {
   // of one length, finite unit normals: what is wrong, in words.
   std::vector<std::string> validate(const Bodies& b) const;
   // Tests break the list on purpose to see validate() catch it.
-  ContactList& listForTesting() { return list_; }
+  ContactList& listForTesting() { return ++listVersion_, list_; }
 
  private:
   // Fills contact k's cached law, damping part, size and radius.
@@ -100,7 +105,9 @@ class ContactSet {
     std::vector<Kept> kept[2];  // linear disc pairs, the others
     ContactList spare;          // the list before last, reused for the next one
   } build_;
-  mutable std::vector<Contact> view_;  // view(), made from list_
+  ContactsByElement byElement_;
+  long long listVersion_ = 0, byElementVersion_ = -1;  // list_ replaced; byElement_ made for
+  mutable std::vector<Contact> view_;                  // view(), made from list_
   mutable bool viewValid_ = false;
   std::vector<Vec2> builtAt_;
   std::vector<double> builtAngle_;
