@@ -274,7 +274,16 @@ FieldValues sampleField(const lb::Lattice& lattice, const std::vector<float>& ep
   } else {
     const auto [lo, hi] = finiteRange(f.value);
     if (diverging) {
-      const double d = std::max(std::abs(lo), std::abs(hi));
+      // As for the speed: a still fluid's noise on the scale of a flow at
+      // Mach 0.01 (its vorticity across a cell, its dynamic pressure), white.
+      const auto& p = lattice.params();
+      const double c = p.h / p.dt;
+      const double still =
+          field == Field::vorticity ? 1e-9 * c / p.h : 1e-9 * p.def.density * c * c;
+      const double flow =
+          field == Field::vorticity ? 0.01 * c / p.h : p.def.density * (0.01 * c) * (0.01 * c);
+      const double m = std::max(std::abs(lo), std::abs(hi));
+      const double d = m < still ? flow : m;
       f.map.lo = -d;
       f.map.hi = d;
     } else if (field == Field::velocity) {

@@ -328,6 +328,34 @@ TEST(SceneBuilder, StillFluidDrawsNoArrowsAndNoStreamlines) {
   }
 }
 
+TEST(SceneBuilder, StillFluidKeysReadAsStill) {
+  // At rest every field holds rounding noise: the keys' scales are those of
+  // a flow at Mach 0.01, not the noise's (whose labels all read 0), and the
+  // noise sits at the map's still end.
+  sim::Manager m;
+  m.createLattice(test::periodicSquare(1.0, 32, 0.01));
+  const double c = latticeSpeed(m), h = m.lattice().params().h;
+  m.lattice().initialize([&](const Vec2& x, double& rho, Vec2& u) {
+    rho = 1 + 1e-16 * std::sin(40 * x.x());
+    u = Vec2(2e-17 * c * std::sin(30 * x.y()), 2e-17 * c * std::cos(30 * x.x()));
+  });
+  const FieldValues speed = sampleField(m.lattice(), Field::velocity, std::nullopt);
+  EXPECT_DOUBLE_EQ(speed.map.hi, 0.01 * c);
+  const FieldValues vorticity = sampleField(m.lattice(), Field::vorticity, std::nullopt);
+  EXPECT_DOUBLE_EQ(vorticity.map.hi, 0.01 * c / h);
+  EXPECT_DOUBLE_EQ(vorticity.map.lo, -0.01 * c / h);
+  const FieldValues pressure = sampleField(m.lattice(), Field::pressure, std::nullopt);
+  EXPECT_DOUBLE_EQ(pressure.map.hi, (0.01 * c) * (0.01 * c));
+  // A real flow keeps its own symmetric scale.
+  m.lattice().initialize([&](const Vec2& x, double& rho, Vec2& u) {
+    rho = 1;
+    u = Vec2(0.02 * c * std::sin(6.283 * x.y()), 0.0);
+  });
+  const FieldValues flowing = sampleField(m.lattice(), Field::vorticity, std::nullopt);
+  EXPECT_GT(flowing.map.hi, 0.1 * c);  // about 2 pi 0.02 c per unit length
+  EXPECT_DOUBLE_EQ(flowing.map.lo, -flowing.map.hi);
+}
+
 TEST(SceneBuilder, ArrowsAreAsLongAsTheFlowIsFast) {
   // Under a fixed speed range, an arrow's length is its speed over the
   // range's top (90% of the grid spacing there, and no longer above it).
