@@ -152,7 +152,7 @@ std::pair<double, double> couette(int subcells) {
   sim::Manager m;
   coupling::Settings s;
   s.subcells = subcells;
-  m.setCoupling(s);
+  m.setCouplingSettings(s);
   lb::LatticeDef def;
   def.size = Vec2(1, 1);
   def.cells = 80;
@@ -359,7 +359,7 @@ int main(int argc, char** argv) {
     m.createLattice(channel(n));
     coupling::Settings s;
     s.subcells = settings[k];
-    m.setCoupling(s);
+    m.setCouplingSettings(s);
     const int discs = addDiscs(m, n, 0.10, 11);
     Split t;
     // Exact areas (the target's case): each repetition against a roofline

@@ -10,16 +10,15 @@ void Assembly::configure(int id, const ElementEdit& e) {
   const int s = slot(id);
   Bodies& b = bodies_;
   const ShapeType type = b.shape[s]->type();
-  if (e.radius && type != ShapeType::disc)
-    throw Error("VALUE RADIUS", "a radius applies to discs only");
+  const ShapeParts parts = partsOf(type);
+  if (e.radius && !parts.radius) throw Error("VALUE RADIUS", "a radius applies to discs only");
   if (e.radius && !(*e.radius > 0 && std::isfinite(*e.radius)))
     throw Error("VALUE RADIUS", "a disc's radius must be > 0, got " + formatNumber(*e.radius));
-  if (e.stress && type != ShapeType::wall)
+  if (e.stress && !parts.stress)
     throw Error("VALUE STRESS", "a servo stress applies to walls only");
   if (e.stress && std::isinf(*e.stress))
     throw Error("VALUE STRESS", "a servo stress must be finite");
-  if ((e.from || e.to) && type != ShapeType::wall)
-    throw Error("VALUE WALL", "ends apply to walls only");
+  if ((e.from || e.to) && !parts.ends) throw Error("VALUE WALL", "ends apply to walls only");
   if ((e.from || e.to) && (e.center || e.angle))
     throw Error("VALUE WALL", "give a wall its ends or its centre and angle, not both");
   if (e.material && (*e.material < 0 || *e.material >= materials_.size()))

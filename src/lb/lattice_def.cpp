@@ -8,6 +8,10 @@
 #include "sandflow/core/memory.hpp"
 
 namespace sf::lb {
+
+std::string unstableTau(double tau) {
+  return "tau " + formatNumber(tau) + " is unstable: must exceed " + formatNumber(kTauMin);
+}
 namespace {
 
 using sf::formatNumber;
@@ -98,26 +102,23 @@ ResolvedLattice resolve(const LatticeDef& def) {
   if (def.viscosity) requirePositive(*def.viscosity, "viscosity");
   if (def.tau && !std::isfinite(*def.tau))
     throw Error("VALUE TAU", "a lattice's tau must be finite");
+  if (def.tau && *def.tau <= kTauMin) throw Error("VALUE TAU", unstableTau(*def.tau));
   if (def.timestep) requirePositive(*def.timestep, "timestep");
   if (def.viscosity && (def.tau || !def.timestep)) {
     r.viscosity = *def.viscosity;
     r.tau = def.tau.value_or(1.0);
-    if (r.tau <= 0.5)
-      throw Error("VALUE TAU", "tau " + formatNumber(r.tau) + " is unstable: must exceed 0.5");
     r.dt = (2 * r.tau - 1) / 6 * h2 / r.viscosity;
   } else if (def.viscosity) {
     r.viscosity = *def.viscosity;
     r.dt = *def.timestep;
     r.tau = 0.5 + 3 * r.viscosity * r.dt / h2;
-    if (r.tau <= 0.5 + 1e-12)
+    if (r.tau <= kTauMin + 1e-12)
       throw Error("VALUE TAU", "tau " + formatNumber(r.tau) + " (from viscosity " +
                                    formatNumber(r.viscosity) + ", spacing " + formatNumber(r.h) +
                                    ", timestep " + formatNumber(r.dt) +
                                    ") is unstable: must exceed 0.5");
   } else if (def.timestep) {
     r.tau = def.tau.value_or(1.0);
-    if (r.tau <= 0.5)
-      throw Error("VALUE TAU", "tau " + formatNumber(r.tau) + " is unstable: must exceed 0.5");
     r.dt = *def.timestep;
     r.viscosity = (2 * r.tau - 1) / 6 * h2 / r.dt;
   } else {

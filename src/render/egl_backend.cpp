@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "sandflow/render/gl_draw.hpp"
-#include "sandflow/render/offscreen.hpp"
+#include "sandflow/render/offscreen_api.hpp"
 
 namespace sf::render {
 namespace {

@@ -4,7 +4,7 @@
 #include <GL/osmesa.h>
 
 #include "sandflow/render/gl_draw.hpp"
-#include "sandflow/render/offscreen.hpp"
+#include "sandflow/render/offscreen_api.hpp"
 
 namespace sf::render {
 namespace {

@@ -11,7 +11,7 @@ namespace sf::sim {
 SceneSize sceneSize(const Manager& m) {
   SceneSize s;
   s.nodes = m.hasLattice() ? m.lattice().nodes() : 0;
-  s.covered = m.coupled() ? m.lattice().coveredCells().size() : 0;
+  s.covered = m.solidsCoverCells() ? m.lattice().coveredCells().size() : 0;
   s.elements = m.assembly().bodies().size();
   s.threads = m.threads();
   s.substeps = m.substeps();

@@ -57,10 +57,10 @@ void Manager::deleteLattice() {
   lattice();  // throws if none
   lattice_.reset();
   coupler_.clear(assembly_);
-  coupled_ = false;
+  coversCells_ = false;
 }
 
-void Manager::setCoupling(const coupling::Settings& settings) {
+void Manager::setCouplingSettings(const coupling::Settings& settings) {
   if (settings.subcells != coupling::kExact && settings.subcells != 1 && settings.subcells != 2 &&
       settings.subcells != 4 && settings.subcells != 8)
     throw Error("VALUE SOLIDRATIO", "the solid ratio's subcells must be exact, 1, 2, 4 or 8, got " +
@@ -206,11 +206,11 @@ void Manager::step() {
     try {
       if (couple) {
         coupleBeforeFluid();
-      } else if (coupled_) {
+      } else if (coversCells_) {
         lattice_->setCoveredCells({}, coupling_.equilibriumInterior);
         coupler_.clear(assembly_);
       }
-      coupled_ = couple;
+      coversCells_ = couple;
       fluidStepped = true;
       lattice_->step(machStopLimit());
     } catch (const Error& e) {
@@ -241,7 +241,7 @@ void Manager::reset() {
   lattice_.reset();
   coupler_ = coupling::Coupler();
   coupling_ = coupling::Settings();
-  coupled_ = false;
+  coversCells_ = false;
   substeps_ = 1;
   profile_.reset();
   assembly_ = dem::Assembly();
@@ -250,7 +250,6 @@ void Manager::reset() {
   fixedTimestep_.reset();
   time_ = 0.0;
   steps_ = 0;
-  mlups_ = 0.0;
   latticeBorn_ = -1000000000;
   watch_.clear();
 }

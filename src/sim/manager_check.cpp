@@ -19,7 +19,7 @@ std::vector<std::string> Manager::validate() const {
     // until the coupling measures them again before the next step, and a
     // loaded scene's coupling has measured nothing yet: compare only when
     // both hold cells.
-    if (coupled_ && !lattice_->coveredCells().empty() && coupler_.coveredCells() > 0 &&
+    if (coversCells_ && !lattice_->coveredCells().empty() && coupler_.coveredCells() > 0 &&
         lattice_->coveredCells().size() != coupler_.coveredCells())
       problems.push_back("the lattice's covered cells are not the coupling's");
   }

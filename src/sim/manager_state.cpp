@@ -14,7 +14,7 @@ void Manager::saveState(ByteWriter& out) const {
   out.put(std::int32_t(substeps_));
   out.put(std::int32_t(coupling_.subcells)), out.put(std::int32_t(coupling_.share));
   out.put(coupling_.buoyancy), out.put(coupling_.equilibriumInterior), out.put(coupling_.implicit);
-  out.put(coupled_);
+  out.put(coversCells_);
   watch_.save(out);
   out.put(lattice_ != nullptr);
   if (lattice_) lattice_->saveState(out);
@@ -37,8 +37,8 @@ void Manager::loadState(ByteReader& in) {
   c.share = coupling::Share(share);
   c.buoyancy = in.getBool("coupling"), c.equilibriumInterior = in.getBool("coupling");
   c.implicit = in.getBool("coupling");
-  setCoupling(c);  // its own checks
-  coupled_ = in.getBool("flags");
+  setCouplingSettings(c);  // its own checks
+  coversCells_ = in.getBool("flags");
   watch_.load(in);
   if (in.getBool("lattice")) lattice_ = lb::Lattice::loadState(in);
   attachParts();

@@ -117,7 +117,7 @@ void StepWatch::checkCoverage(const Manager& m) {
              "(fluid flows through it); make the lattice wider than the element by a cell or "
              "more");
   }
-  if (m.coupling().implicit || given(WarningCode::lightElement)) return;
+  if (m.couplingSettings().implicit || given(WarningCode::lightElement)) return;
   // |lambda| reaches 1 at r = 1 with the first-order integrator, at 1/2 with
   // the others (docs/coupling.md, Stability).
   const double limit = m.assembly().integrator == dem::Integrator::euler ? 1.0 : 0.5;
@@ -199,10 +199,10 @@ void StepWatch::checkFluid(const Manager& m, long long age) {
   if (given(WarningCode::outrun) || !p.def.forcing.isZero() || age < 4LL * std::max(p.nx, p.ny))
     return;
   const dem::Bodies& b = m.assembly().bodies();
-  if (m.coupled())
+  if (m.solidsCoverCells())
     for (int s = 0; s < b.size(); ++s)
       if (b.invMass[s] > 0 || b.invInertia[s] > 0) return;
-  double driver = m.coupled() ? m.coupler().fastest().mach : 0.0;
+  double driver = m.solidsCoverCells() ? m.coupler().fastest().mach : 0.0;
   for (const lb::SideDef& side : p.def.sides) {
     if (side.kind == lb::SideKind::velocity || side.kind == lb::SideKind::pressure) return;
     if (side.kind == lb::SideKind::noslip)

@@ -1,4 +1,6 @@
-// Loading the off-screen back-end module and taking pictures with it.
+// Loading the off-screen back-end module (render/offscreen_api.hpp) and taking
+// pictures with it. Its state is the process's: one back end, loaded once, whose
+// one GL context serves every interpreter in turn.
 #include <dlfcn.h>
 
 #include <cstdlib>
@@ -6,7 +8,7 @@
 #include <vector>
 
 #include "sandflow/core/error.hpp"
-#include "sandflow/render/offscreen.hpp"
+#include "sandflow/render/offscreen_api.hpp"
 #include "sandflow/render/scene_builder.hpp"
 #include "sandflow/tcl/picture.hpp"
 

@@ -10,19 +10,19 @@ namespace sf::tcl {
 namespace {
 
 // What bond create sets; NaN: from the two elements' materials.
-struct BondStage {
+struct BondDraft {
   double stiffness = std::numeric_limits<double>::quiet_NaN();
   double strength = std::numeric_limits<double>::quiet_NaN();
   double shearStrength = std::numeric_limits<double>::quiet_NaN();
 };
 
-using Row = Option<BondStage>;
-Row bondRow(OptionInfo info, double BondStage::*field) {
+using Row = Option<BondDraft>;
+Row bondRow(OptionInfo info, double BondDraft::*field) {
   info.range = {.min = 0};
-  return Row{info, [field](const BondStage& s) { return realValue(s.*field); },
-             [field](BondStage& s, const OptionValue& v) { s.*field = v.real; }};
+  return Row{info, [field](const BondDraft& s) { return realValue(s.*field); },
+             [field](BondDraft& s, const OptionValue& v) { s.*field = v.real; }};
 }
-const OptionTable<BondStage> kCreateOptions{
+const OptionTable<BondDraft> kCreateOptions{
     bondRow({"-stiffness",
              "k",
              "bond stiffness",
@@ -33,7 +33,7 @@ const OptionTable<BondStage> kCreateOptions{
              nullptr,
              nullptr,
              "the materials' -bondstiffness, the smaller"},
-            &BondStage::stiffness),
+            &BondDraft::stiffness),
     bondRow({"-strength",
              "s",
              "tensile strength",
@@ -44,7 +44,7 @@ const OptionTable<BondStage> kCreateOptions{
              nullptr,
              nullptr,
              "the materials' -bondstrength, the smaller"},
-            &BondStage::strength),
+            &BondDraft::strength),
     bondRow({"-shearstrength",
              "s",
              "shear strength",
@@ -55,7 +55,7 @@ const OptionTable<BondStage> kCreateOptions{
              nullptr,
              nullptr,
              "the tensile strength"},
-            &BondStage::shearStrength),
+            &BondDraft::shearStrength),
 };
 const OptionSpec kAutoOptions[] = {{"-elements", "IDS", "only among these elements (default all)"},
                                    {"-gap", "g", "largest surface gap bonded (default 0)"},
@@ -70,14 +70,14 @@ int BondCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
   }
   int a = 0, b = 0;
   if (!getInt(interp, objv[1], "ID1", a) || !getInt(interp, objv[2], "ID2", b)) return TCL_ERROR;
-  BondStage stage;
-  if (!kCreateOptions.apply(interp, objc, objv, 3, stage)) return TCL_ERROR;
+  BondDraft draft;
+  if (!kCreateOptions.apply(interp, objc, objv, 3, draft)) return TCL_ERROR;
   auto orFromMaterials = [](double v) { return std::isnan(v) ? -1.0 : v; };
   return guarded(interp, [&] {
     Tcl_SetObjResult(interp,
                      Tcl_NewIntObj(sessionOf(data).manager.assembly().bond(
-                         a, b, orFromMaterials(stage.stiffness), orFromMaterials(stage.strength),
-                         orFromMaterials(stage.shearStrength))));
+                         a, b, orFromMaterials(draft.stiffness), orFromMaterials(draft.strength),
+                         orFromMaterials(draft.shearStrength))));
     return TCL_OK;
   });
 }
@@ -188,7 +188,7 @@ int BondOptions(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[])
     Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
-  Tcl_SetObjResult(interp, kCreateOptions.describe(BondStage{}));
+  Tcl_SetObjResult(interp, kCreateOptions.describe(BondDraft{}));
   return TCL_OK;
 }
 
@@ -203,7 +203,7 @@ int BondHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
        "auto ?-elements IDS? ?-gap g?   -> number of bonds made", "ids", "info BID", "delete BID",
        "broken ?-since t?   -> list of {time x y angle} break events",
        "options   -> create's options as dicts", "help"},
-      BondStage{});
+      BondDraft{});
   Tcl_SetObjResult(interp, newString(text));
   return TCL_OK;
 }

@@ -153,6 +153,7 @@ int CheckpointLoad(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const
   // (a file that fails to close is reported, and the load goes on).
   if (closeRecorders(s, nullptr) != TCL_OK) warnUser(s, Tcl_GetStringResult(interp));
   s.manager = std::move(*c.manager);
+  s.mlups = 0.0;
   s.view = std::move(view);
   s.viewList.reset();
   Tcl_Obj* recordings = restartRecordings(s, session, restart);

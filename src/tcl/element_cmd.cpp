@@ -42,13 +42,13 @@ int ElementConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
   if (!getElement(interp, objv[1], a, slot)) return TCL_ERROR;
   const ElementTable& table = configureOptions();
   if (objc == 2) {
-    Tcl_SetObjResult(interp, table.all(ElementStage::of(a, slot)));
+    Tcl_SetObjResult(interp, table.all(ElementDraft::of(a, slot)));
     return TCL_OK;
   }
   if (objc == 3) {
     const int k = optionIndex(interp, objv[2], table.specs());
     if (k < 0) return TCL_ERROR;
-    Tcl_SetObjResult(interp, table.get(ElementStage::of(a, slot), k));
+    Tcl_SetObjResult(interp, table.get(ElementDraft::of(a, slot), k));
     return TCL_OK;
   }
   if (objc % 2) {
@@ -57,7 +57,7 @@ int ElementConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
   }
   // Only the options given are staged; the kernel checks the edit whole
   // (what applies to the shape, the mass) before it changes anything.
-  ElementStage e;
+  ElementDraft e;
   e.materials = &a.materials();
   if (!table.apply(interp, objc, objv, 2, e)) return TCL_ERROR;
   dem::ElementEdit edit;
@@ -86,7 +86,7 @@ int ElementCget(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
   const ElementTable& table = configureOptions();
   const int k = optionIndex(interp, objv[2], table.specs());
   if (k < 0) return TCL_ERROR;
-  Tcl_SetObjResult(interp, table.get(ElementStage::of(a, slot), k));
+  Tcl_SetObjResult(interp, table.get(ElementDraft::of(a, slot), k));
   return TCL_OK;
 }
 
@@ -119,7 +119,7 @@ int ElementInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
     contacts += c.touching && ((c.idA == b.id[s] && b.slot(c.idB) >= 0) ||
                                (c.idB == b.id[s] && b.slot(c.idA) >= 0));
   const dem::Shape& shape = *b.shape[s];
-  const ElementStage stage = ElementStage::of(a, s);
+  const ElementDraft draft = ElementDraft::of(a, s);
   Tcl_Obj* d = newDict({{"id", Tcl_NewIntObj(b.id[s])},
                         {"type", Tcl_NewStringObj(dem::shapeTypeNames[int(shape.type())], -1)},
                         {"position", newVec2(b.x[s])},
@@ -139,7 +139,7 @@ int ElementInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
                         {"fluidforce", newVec2(b.fluidForce[s])},
                         {"fluidtorque", newDouble(b.fluidTorque[s])},
                         {"buoyancy", newVec2(b.buoyancy[s])}});
-  if (shape.type() == ShapeType::disc) dictPut(d, "radius", newDouble(*stage.radius));
+  if (shape.type() == ShapeType::disc) dictPut(d, "radius", newDouble(*draft.radius));
   if (shape.type() == ShapeType::polygon) {
     Tcl_Obj* v = Tcl_NewListObj(0, nullptr);
     for (const Vec2& p : static_cast<const dem::Polygon&>(shape).world(b.x[s], b.angle[s])) {
@@ -155,8 +155,8 @@ int ElementInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
     dictPut(d, "sides", Tcl_NewIntObj(q.samples()));
   }
   if (shape.type() == ShapeType::wall) {
-    dictPut(d, "from", newVec2(*stage.from));
-    dictPut(d, "to", newVec2(*stage.to));
+    dictPut(d, "from", newVec2(*draft.from));
+    dictPut(d, "to", newVec2(*draft.to));
   }
   Tcl_SetObjResult(interp, d);
   return TCL_OK;
@@ -243,7 +243,7 @@ int ElementHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[])
            "options ?ID?   -> configure's options (those that apply to element ID) as dicts: "
            "name type unit min max choices default ...",
            "help"},
-          ElementStage::defaults(ShapeType::disc))));
+          ElementDraft::defaults(ShapeType::disc))));
   return TCL_OK;
 }
 

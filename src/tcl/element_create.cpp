@@ -18,13 +18,13 @@ using dem::ShapeType;
 
 // The options from objv[1..), converted and range-checked by the table's rows.
 bool parseCreate(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], const ElementTable& table,
-                 const dem::Assembly& assembly, ElementStage& e) {
+                 const dem::Assembly& assembly, ElementDraft& e) {
   e.materials = &assembly.materials();
   return table.apply(interp, objc, objv, 1, e);
 }
 
 // Settings shared by every shape, onto a definition.
-void applyCommon(const ElementStage& e, ElementDef& def) {
+void applyCommon(const ElementDraft& e, ElementDef& def) {
   if (e.material) def.material = *e.material;
   if (e.angle) def.angle = *e.angle;
   if (e.velocity) def.v = e.velocity->head<2>(), def.w = (*e.velocity)[2];
@@ -61,7 +61,7 @@ int DiscCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
     Tcl_WrongNumArgs(interp, 1, objv, "-center {x y} -radius r ?-option value ...?");
     return TCL_ERROR;
   }
-  ElementStage e;
+  ElementDraft e;
   if (!parseCreate(interp, objc, objv, discOptions(), s.manager.assembly(), e)) return TCL_ERROR;
   if (!e.center) return fail(interp, "VALUE CENTER", "disc create needs -center {x y}");
   if (!e.radius) return fail(interp, "VALUE RADIUS", "disc create needs -radius r");
@@ -78,7 +78,7 @@ int WallCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
     Tcl_WrongNumArgs(interp, 1, objv, "-from {x y} -to {x y} ?-option value ...?");
     return TCL_ERROR;
   }
-  ElementStage e;
+  ElementDraft e;
   if (!parseCreate(interp, objc, objv, wallOptions(), s.manager.assembly(), e)) return TCL_ERROR;
   if (!e.from || !e.to)
     return fail(interp, "VALUE WALL", "wall create needs -from {x y} and -to {x y}");
@@ -107,7 +107,7 @@ int PolygonCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
     Tcl_WrongNumArgs(interp, 1, objv, "-vertices {x1 y1 x2 y2 ...} ?-option value ...?");
     return TCL_ERROR;
   }
-  ElementStage e;
+  ElementDraft e;
   if (!parseCreate(interp, objc, objv, polygonOptions(), s.manager.assembly(), e)) return TCL_ERROR;
   if (!e.vertices) return fail(interp, "VALUE VERTICES", "polygon create needs -vertices");
   std::optional<dem::Polygon> polygon;
@@ -130,7 +130,7 @@ int EllipseCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
     Tcl_WrongNumArgs(interp, 1, objv, "-center {x y} -axes {a b} ?-sides N? ?-option value ...?");
     return TCL_ERROR;
   }
-  ElementStage e;
+  ElementDraft e;
   if (!parseCreate(interp, objc, objv, ellipseOptions(), s.manager.assembly(), e)) return TCL_ERROR;
   if (!e.center) return fail(interp, "VALUE CENTER", "ellipse create needs -center {x y}");
   if (!e.axes) return fail(interp, "VALUE AXES", "ellipse create needs -axes {a b}");
@@ -160,7 +160,7 @@ int SuperquadricCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* c
                      "-center {x y} -axes {a b} -exponents {m n} ?-sides N? ?-option value ...?");
     return TCL_ERROR;
   }
-  ElementStage e;
+  ElementDraft e;
   if (!parseCreate(interp, objc, objv, superquadricOptions(), s.manager.assembly(), e))
     return TCL_ERROR;
   if (!e.center) return fail(interp, "VALUE CENTER", "superquadric create needs -center {x y}");
@@ -189,7 +189,7 @@ int helpFor(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], const char* nou
     return TCL_ERROR;
   }
   Tcl_SetObjResult(interp,
-                   newString(table.help(noun, {create, "help"}, ElementStage::defaults(shape))));
+                   newString(table.help(noun, {create, "help"}, ElementDraft::defaults(shape))));
   return TCL_OK;
 }
 

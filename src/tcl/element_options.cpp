@@ -10,38 +10,38 @@ namespace sf::tcl {
 namespace {
 
 using dem::ShapeType;
-using Row = Option<ElementStage>;
+using Row = Option<ElementDraft>;
 
 const char* const kHoldNames[] = {"x", "y", "rot", nullptr};  // bits of dem::Hold
 
-// Rows over one optional field of the stage: {} where it is not set.
+// Rows over one optional field of the draft: {} where it is not set.
 template <class T, class Make>
 OptionValue maybe(const std::optional<T>& v, Make make) {
   return v ? make(*v) : emptyValue();
 }
-Row vec2Row(OptionInfo info, std::optional<Vec2> ElementStage::*f) {
+Row vec2Row(OptionInfo info, std::optional<Vec2> ElementDraft::*f) {
   info.kind = ValueKind::vec2;
-  return Row{info, [f](const ElementStage& s) { return maybe(s.*f, vecValue); },
-             [f](ElementStage& s, const OptionValue& v) { s.*f = v.vec; }};
+  return Row{info, [f](const ElementDraft& s) { return maybe(s.*f, vecValue); },
+             [f](ElementDraft& s, const OptionValue& v) { s.*f = v.vec; }};
 }
-Row vec3Row(OptionInfo info, std::optional<Eigen::Vector3d> ElementStage::*f) {
+Row vec3Row(OptionInfo info, std::optional<Eigen::Vector3d> ElementDraft::*f) {
   info.kind = ValueKind::vec3;
-  return Row{info, [f](const ElementStage& s) { return maybe(s.*f, vec3Value); },
-             [f](ElementStage& s, const OptionValue& v) { s.*f = v.vec3; }};
+  return Row{info, [f](const ElementDraft& s) { return maybe(s.*f, vec3Value); },
+             [f](ElementDraft& s, const OptionValue& v) { s.*f = v.vec3; }};
 }
-Row realRow(OptionInfo info, std::optional<double> ElementStage::*f) {
+Row realRow(OptionInfo info, std::optional<double> ElementDraft::*f) {
   info.kind = ValueKind::real;
-  return Row{info, [f](const ElementStage& s) { return maybe(s.*f, realValue); },
-             [f](ElementStage& s, const OptionValue& v) { s.*f = v.real; }};
+  return Row{info, [f](const ElementDraft& s) { return maybe(s.*f, realValue); },
+             [f](ElementDraft& s, const OptionValue& v) { s.*f = v.real; }};
 }
-Row integerRow(OptionInfo info, std::optional<int> ElementStage::*f) {
+Row integerRow(OptionInfo info, std::optional<int> ElementDraft::*f) {
   info.kind = ValueKind::integer;
-  return Row{info, [f](const ElementStage& s) { return maybe(s.*f, integerValue); },
-             [f](ElementStage& s, const OptionValue& v) { s.*f = v.integer; }};
+  return Row{info, [f](const ElementDraft& s) { return maybe(s.*f, integerValue); },
+             [f](ElementDraft& s, const OptionValue& v) { s.*f = v.integer; }};
 }
 
 // A polygon's corners: at least three points, convexity the kernel's to judge.
-bool parseVertices(Tcl_Interp* interp, Tcl_Obj* value, ElementStage& s) {
+bool parseVertices(Tcl_Interp* interp, Tcl_Obj* value, ElementDraft& s) {
   int n = 0;
   Tcl_Obj** items = nullptr;
   if (Tcl_ListObjGetElements(interp, value, &n, &items) != TCL_OK) return false;
@@ -61,13 +61,13 @@ bool parseVertices(Tcl_Interp* interp, Tcl_Obj* value, ElementStage& s) {
 }
 
 const Row kCenter =
-    vec2Row({"-center", "{x y}", "position of the centroid", {}, "length"}, &ElementStage::center);
+    vec2Row({"-center", "{x y}", "position of the centroid", {}, "length"}, &ElementDraft::center);
 const Row kRadius =
     realRow({"-radius", "r", "disc radius", {}, "length", {.min = 0, .minOpen = true}},
-            &ElementStage::radius);
+            &ElementDraft::radius);
 const Row kFrom =
-    vec2Row({"-from", "{x y}", "wall start point", {}, "length"}, &ElementStage::from);
-const Row kTo = vec2Row({"-to", "{x y}", "wall end point", {}, "length"}, &ElementStage::to);
+    vec2Row({"-from", "{x y}", "wall start point", {}, "length"}, &ElementDraft::from);
+const Row kTo = vec2Row({"-to", "{x y}", "wall end point", {}, "length"}, &ElementDraft::to);
 const Row kThickness = realRow({"-thickness",
                                 "t",
                                 "a wall's thickness, for its mass when set free",
@@ -78,7 +78,7 @@ const Row kThickness = realRow({"-thickness",
                                 nullptr,
                                 nullptr,
                                 "1/20 of its length"},
-                               &ElementStage::thickness);
+                               &ElementDraft::thickness);
 // A choice among the session's materials: converted and shown by name.
 const Row kMaterial{
     {"-material",
@@ -93,7 +93,7 @@ const Row kMaterial{
      "default"},
     nullptr,
     nullptr,
-    [](Tcl_Interp* interp, Tcl_Obj* v, ElementStage& s) {
+    [](Tcl_Interp* interp, Tcl_Obj* v, ElementDraft& s) {
       const int m = s.materials ? s.materials->find(Tcl_GetString(v)) : -1;
       if (m < 0)
         return reject(interp, "LOOKUP MATERIAL",
@@ -101,16 +101,16 @@ const Row kMaterial{
       s.material = m;
       return true;
     },
-    [](const ElementStage& s) {
+    [](const ElementDraft& s) {
       return s.material && s.materials ? newString((*s.materials)[*s.material].name) : Tcl_NewObj();
     }};
-const Row kAngle = realRow({"-angle", "rad", "orientation", {}, "rad"}, &ElementStage::angle);
+const Row kAngle = realRow({"-angle", "rad", "orientation", {}, "rad"}, &ElementDraft::angle);
 const Row kVelocity = vec3Row({"-velocity",
                                "{vx vy w}",
                                "velocity and angular velocity (prescribed where held)",
                                {},
                                "length/time, rad/time"},
-                              &ElementStage::velocity);
+                              &ElementDraft::velocity);
 const Row kFix{{"-fix",
                 "{x y rot}",
                 "degrees of freedom held at their prescribed velocity; {} frees all",
@@ -119,17 +119,17 @@ const Row kFix{{"-fix",
                 {},
                 kHoldNames,
                 "degree of freedom"},
-               [](const ElementStage& s) { return maybe(s.hold, flagsValue); },
-               [](ElementStage& s, const OptionValue& v) { s.hold = std::uint8_t(v.flags); }};
+               [](const ElementDraft& s) { return maybe(s.hold, flagsValue); },
+               [](ElementDraft& s, const OptionValue& v) { s.hold = std::uint8_t(v.flags); }};
 const Row kForce =
     vec3Row({"-force", "{Fx Fy T}", "applied force and torque", {}, "force, force length"},
-            &ElementStage::force);
+            &ElementDraft::force);
 const Row kAcceleration = vec2Row({"-acceleration",
                                    "{ax ay}",
                                    "a body acceleration of its own, added to gravity",
                                    {},
                                    "length/time^2"},
-                                  &ElementStage::acceleration);
+                                  &ElementDraft::acceleration);
 const Row kId = integerRow({"-id",
                             "N",
                             "the element's id",
@@ -140,25 +140,25 @@ const Row kId = integerRow({"-id",
                             nullptr,
                             nullptr,
                             "the next free one"},
-                           &ElementStage::id);
+                           &ElementDraft::id);
 const Row kVertices{{"-vertices", "{x1 y1 x2 y2 ...}",
                      "corners of a convex polygon, in either order", ValueKind::custom, "length"},
                     nullptr,
                     nullptr,
                     parseVertices,
-                    [](const ElementStage&) { return Tcl_NewObj(); }};
+                    [](const ElementDraft&) { return Tcl_NewObj(); }};
 // Semi-axes and exponents: their ranges are the kernel's (dem/shape_checks.hpp),
 // checked whole before a shape is made.
 const Row kAxes =
     vec2Row({"-axes", "{a b}", "semi-axes of the ellipse along its own x and y", {}, "length"},
-            &ElementStage::axes);
+            &ElementDraft::axes);
 const Row kSides = integerRow({"-sides",
                                "N",
                                "sides of the polygon that approximates the ellipse",
                                {},
                                "",
                                {.min = 3, .max = 10000}},
-                              &ElementStage::sides);
+                              &ElementDraft::sides);
 // A superquadric's outline samples: the kernel takes no fewer than 8.
 const Row kSamples =
     integerRow({"-sides",
@@ -172,7 +172,7 @@ const Row kSamples =
                 [](double n) {
                   return "-sides must be 8 to 10000 for a superquadric, got " + formatNumber(n);
                 }},
-               &ElementStage::sides);
+               &ElementDraft::sides);
 const Row kStress{{"-stress",
                    "s",
                    "a wall becomes a plate holding stress s (load s x length) on what it "
@@ -185,20 +185,20 @@ const Row kStress{{"-stress",
                    nullptr,
                    nullptr,
                    true},
-                  [](const ElementStage& s) { return maybe(s.stress, realValue); },
-                  [](ElementStage& s, const OptionValue& v) {
+                  [](const ElementDraft& s) { return maybe(s.stress, realValue); },
+                  [](ElementDraft& s, const OptionValue& v) {
                     s.stress = v.empty ? std::numeric_limits<double>::quiet_NaN() : v.real;
                   }};
 const Row kExponents =
     vec2Row({"-exponents", "{m n}", "superquadric exponents, 1 to 100: |x/a|^m + |y/b|^n = 1"},
-            &ElementStage::exponents);
+            &ElementDraft::exponents);
 
 }  // namespace
 
-ElementStage ElementStage::of(const dem::Assembly& a, int slot) {
+ElementDraft ElementDraft::of(const dem::Assembly& a, int slot) {
   const dem::Bodies& b = a.bodies();
   const dem::Shape& shape = *b.shape[slot];
-  ElementStage s;
+  ElementDraft s;
   s.materials = &a.materials();
   s.center = b.x[slot];
   if (shape.type() == ShapeType::disc) s.radius = static_cast<const dem::Disc&>(shape).radius();
@@ -219,8 +219,8 @@ ElementStage ElementStage::of(const dem::Assembly& a, int slot) {
   return s;
 }
 
-ElementStage ElementStage::defaults(ShapeType shape) {
-  ElementStage s;
+ElementDraft ElementDraft::defaults(ShapeType shape) {
+  ElementDraft s;
   s.angle = 0;
   s.velocity = s.force = Eigen::Vector3d::Zero();
   s.hold = shape == ShapeType::wall ? dem::holdX | dem::holdY | dem::holdRotation : 0;
@@ -261,18 +261,20 @@ const ElementTable& configureOptions() {
   return t;
 }
 
-// Whether configure's option applies to a shape: the kernel refuses the rest
-// (Assembly::configure).
+// Whether configure's option applies to a shape, as the kernel has it
+// (dem::partsOf).
 static bool appliesTo(const std::string& option, ShapeType shape) {
-  if (option == "-radius") return shape == ShapeType::disc;
-  if (option == "-from" || option == "-to" || option == "-stress") return shape == ShapeType::wall;
+  const dem::ShapeParts parts = dem::partsOf(shape);
+  if (option == "-radius") return parts.radius;
+  if (option == "-from" || option == "-to") return parts.ends;
+  if (option == "-stress") return parts.stress;
   return true;
 }
 
 Tcl_Obj* describeConfigureOptions(const dem::MaterialTable& materials,
                                   std::optional<ShapeType> shape) {
   const ElementTable& table = configureOptions();
-  Tcl_Obj* all = table.describe(ElementStage::defaults(shape.value_or(ShapeType::disc)));
+  Tcl_Obj* all = table.describe(ElementDraft::defaults(shape.value_or(ShapeType::disc)));
   Tcl_Obj* names = Tcl_NewListObj(0, nullptr);
   for (const std::string& n : materials.names())
     Tcl_ListObjAppendElement(nullptr, names, newString(n));

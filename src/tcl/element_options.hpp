@@ -17,7 +17,7 @@ struct Session;
 
 // An element's settings as options give them, each only when given (an edit)
 // or when it applies to the shape (what configure shows).
-struct ElementStage {
+struct ElementDraft {
   const dem::MaterialTable* materials = nullptr;  // where -material's names are
   std::optional<Vec2> center, from, to, acceleration, axes, exponents;
   std::optional<double> radius, thickness, angle;
@@ -28,12 +28,12 @@ struct ElementStage {
   std::optional<std::vector<Vec2>> vertices;
 
   // What `element configure ID` shows for the element in `slot`.
-  static ElementStage of(const dem::Assembly& a, int slot);
+  static ElementDraft of(const dem::Assembly& a, int slot);
   // A new element's settings, for help and `element options`; a wall is held.
-  static ElementStage defaults(dem::ShapeType shape);
+  static ElementDraft defaults(dem::ShapeType shape);
 };
 
-using ElementTable = OptionTable<ElementStage>;
+using ElementTable = OptionTable<ElementDraft>;
 const ElementTable& discOptions();
 const ElementTable& wallOptions();
 const ElementTable& polygonOptions();

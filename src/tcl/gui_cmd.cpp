@@ -325,7 +325,8 @@ int StatusInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
     Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
-  const sim::Manager& m = sessionOf(data).manager;
+  const Session& s = sessionOf(data);
+  const sim::Manager& m = s.manager;
   const bool lattice = m.hasLattice();
   Tcl_Obj* warnings = Tcl_NewListObj(0, nullptr);
   for (const sim::Warning& w : m.warnings())
@@ -334,7 +335,7 @@ int StatusInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
       interp, newDict({{"step", Tcl_NewWideIntObj(m.stepCount())},
                        {"time", newDouble(m.time())},
                        {"nodes", Tcl_NewWideIntObj(lattice ? Tcl_WideInt(m.lattice().nodes()) : 0)},
-                       {"mlups", newDouble(m.mlups())},
+                       {"mlups", newDouble(s.mlups)},
                        {"mach", newDouble(lattice ? m.lattice().lastStepMach() : 0.0)},
                        {"elements", Tcl_NewIntObj(m.assembly().bodies().size())},
                        {"warnings", warnings}}));

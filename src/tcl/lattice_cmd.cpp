@@ -18,25 +18,25 @@ const char* const kForceSchemeNames[] = {"nodal", "guo", nullptr};
 
 // What lattice create and configure set, staged; with the resolved values
 // that cget reports.
-struct LatticeStage {
+struct LatticeDraft {
   LatticeDef def;
   int nx = 0;
   double h = 0, viscosity = 0, tau = 0;
 
-  static LatticeStage of(const lb::ResolvedLattice& p) {
-    LatticeStage s{p.def, p.nx, p.h, p.viscosity, p.tau};
+  static LatticeDraft of(const lb::ResolvedLattice& p) {
+    LatticeDraft s{p.def, p.nx, p.h, p.viscosity, p.tau};
     s.def.viscosity = p.viscosity, s.def.tau = p.tau, s.def.timestep = p.dt;
     s.def.cells = p.nx, s.def.spacing = 0;
     return s;
   }
 };
 
-using Row = Option<LatticeStage>;
+using Row = Option<LatticeDraft>;
 // In this order: -periodic is applied before -walls.
-const OptionTable<LatticeStage> kOptions{
+const OptionTable<LatticeDraft> kOptions{
     {Row{{"-origin", "{x0 y0}", "lower-left corner", ValueKind::vec2, "length"},
-         [](const LatticeStage& s) { return vecValue(s.def.origin); },
-         [](LatticeStage& s, const OptionValue& v) { s.def.origin = v.vec; }},
+         [](const LatticeDraft& s) { return vecValue(s.def.origin); },
+         [](LatticeDraft& s, const OptionValue& v) { s.def.origin = v.vec; }},
      Row{{"-size",
           "{Lx Ly}",
           "width and height, whole numbers of spacings",
@@ -47,8 +47,8 @@ const OptionTable<LatticeStage> kOptions{
           nullptr,
           nullptr,
           ""},
-         [](const LatticeStage& s) { return vecValue(s.def.size); },
-         [](LatticeStage& s, const OptionValue& v) { s.def.size = v.vec; }},
+         [](const LatticeDraft& s) { return vecValue(s.def.size); },
+         [](LatticeDraft& s, const OptionValue& v) { s.def.size = v.vec; }},
      Row{{"-cells",
           "NX",
           "cells across x (or give -spacing)",
@@ -59,8 +59,8 @@ const OptionTable<LatticeStage> kOptions{
           nullptr,
           nullptr,
           ""},
-         [](const LatticeStage& s) { return integerValue(s.nx); },
-         [](LatticeStage& s, const OptionValue& v) { s.def.cells = v.integer, s.def.spacing = 0; }},
+         [](const LatticeDraft& s) { return integerValue(s.nx); },
+         [](LatticeDraft& s, const OptionValue& v) { s.def.cells = v.integer, s.def.spacing = 0; }},
      Row{{"-spacing",
           "h",
           "node spacing (or give -cells)",
@@ -71,8 +71,8 @@ const OptionTable<LatticeStage> kOptions{
           nullptr,
           nullptr,
           ""},
-         [](const LatticeStage& s) { return realValue(s.h); },
-         [](LatticeStage& s, const OptionValue& v) { s.def.spacing = v.real, s.def.cells = 0; }},
+         [](const LatticeDraft& s) { return realValue(s.h); },
+         [](LatticeDraft& s, const OptionValue& v) { s.def.spacing = v.real, s.def.cells = 0; }},
      Row{{"-viscosity",
           "nu",
           "kinematic viscosity; with tau it sets the timestep",
@@ -83,35 +83,35 @@ const OptionTable<LatticeStage> kOptions{
           nullptr,
           nullptr,
           ""},
-         [](const LatticeStage& s) { return realValue(s.viscosity); },
-         [](LatticeStage& s, const OptionValue& v) { s.def.viscosity = v.real; }},
+         [](const LatticeDraft& s) { return realValue(s.viscosity); },
+         [](LatticeDraft& s, const OptionValue& v) { s.def.viscosity = v.real; }},
      Row{{"-density",
           "rho0",
           "initial and reference density",
           ValueKind::real,
           "mass/length^2",
           {.min = 0, .minOpen = true}},
-         [](const LatticeStage& s) { return realValue(s.def.density); },
-         [](LatticeStage& s, const OptionValue& v) { s.def.density = v.real; }},
+         [](const LatticeDraft& s) { return realValue(s.def.density); },
+         [](LatticeDraft& s, const OptionValue& v) { s.def.density = v.real; }},
      Row{{"-tau",
           "tau",
           "relaxation time (a fixed sim -timestep sets it instead)",
           ValueKind::real,
           "",
-          {.min = 0.5, .minOpen = true},
+          {.min = lb::kTauMin, .minOpen = true},
           nullptr,
           nullptr,
-          [](double tau) { return "tau " + formatNumber(tau) + " is unstable: must exceed 0.5"; },
+          lb::unstableTau,
           "1"},
-         [](const LatticeStage& s) { return realValue(s.tau); },
-         [](LatticeStage& s, const OptionValue& v) { s.def.tau = v.real; }},
+         [](const LatticeDraft& s) { return realValue(s.tau); },
+         [](LatticeDraft& s, const OptionValue& v) { s.def.tau = v.real; }},
      Row{{"-periodic", "{x y}", "periodic axes: two booleans, or axis names", ValueKind::custom},
          nullptr,
          nullptr,
-         [](Tcl_Interp* interp, Tcl_Obj* v, LatticeStage& s) {
+         [](Tcl_Interp* interp, Tcl_Obj* v, LatticeDraft& s) {
            return parsePeriodic(interp, v, s.def);
          },
-         [](const LatticeStage& s) {
+         [](const LatticeDraft& s) {
            Tcl_Obj* flags[2] = {
                Tcl_NewBooleanObj(s.def.sides[lb::left].kind == SideKind::periodic),
                Tcl_NewBooleanObj(s.def.sides[lb::bottom].kind == SideKind::periodic)};
@@ -123,14 +123,14 @@ const OptionTable<LatticeStage> kOptions{
           ValueKind::custom},
          nullptr,
          nullptr,
-         [](Tcl_Interp* interp, Tcl_Obj* v, LatticeStage& s) {
+         [](Tcl_Interp* interp, Tcl_Obj* v, LatticeDraft& s) {
            return parseWalls(interp, v, s.def);
          },
-         [](const LatticeStage& s) { return wallsValue(s.def); }},
+         [](const LatticeDraft& s) { return wallsValue(s.def); }},
      Row{{"-forcing", "{Fx Fy}", "body force per unit area (rho a)", ValueKind::vec2,
           "mass/(length time^2)"},
-         [](const LatticeStage& s) { return vecValue(s.def.forcing); },
-         [](LatticeStage& s, const OptionValue& v) { s.def.forcing = v.vec; }},
+         [](const LatticeDraft& s) { return vecValue(s.def.forcing); },
+         [](LatticeDraft& s, const OptionValue& v) { s.def.forcing = v.vec; }},
      Row{{"-collision",
           "bgk|trt",
           "collision operator",
@@ -139,8 +139,8 @@ const OptionTable<LatticeStage> kOptions{
           {},
           kCollisionNames,
           "collision"},
-         [](const LatticeStage& s) { return choiceValue(int(s.def.collision)); },
-         [](LatticeStage& s, const OptionValue& v) { s.def.collision = lb::Collision(v.choice); }},
+         [](const LatticeDraft& s) { return choiceValue(int(s.def.collision)); },
+         [](LatticeDraft& s, const OptionValue& v) { s.def.collision = lb::Collision(v.choice); }},
      Row{{"-forcescheme",
           "nodal|guo",
           "body-force scheme (nodal: the thesis's)",
@@ -149,8 +149,8 @@ const OptionTable<LatticeStage> kOptions{
           {},
           kForceSchemeNames,
           "force scheme"},
-         [](const LatticeStage& s) { return choiceValue(int(s.def.forceScheme)); },
-         [](LatticeStage& s, const OptionValue& v) {
+         [](const LatticeDraft& s) { return choiceValue(int(s.def.forceScheme)); },
+         [](LatticeDraft& s, const OptionValue& v) {
            s.def.forceScheme = lb::ForceScheme(v.choice);
          }},
      Row{{"-magic",
@@ -159,15 +159,15 @@ const OptionTable<LatticeStage> kOptions{
           ValueKind::real,
           "",
           {.min = 0, .minOpen = true}},
-         [](const LatticeStage& s) { return realValue(s.def.magic); },
-         [](LatticeStage& s, const OptionValue& v) { s.def.magic = v.real; }}},
+         [](const LatticeDraft& s) { return realValue(s.def.magic); },
+         [](LatticeDraft& s, const OptionValue& v) { s.def.magic = v.real; }}},
     true};
 enum { kSize = 1, kCells, kSpacing, kViscosity, kDensity, kTau };
 
 // A new lattice's settings, for help's and `lattice options`' defaults.
-const LatticeStage& defaults() {
-  static const LatticeStage d = [] {
-    LatticeStage s;
+const LatticeDraft& defaults() {
+  static const LatticeDraft d = [] {
+    LatticeDraft s;
     s.tau = 1;
     return s;
   }();
@@ -180,10 +180,10 @@ int LatticeCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
     Tcl_WrongNumArgs(interp, 1, objv, "-size {Lx Ly} (-cells NX | -spacing h) ?-option value ...?");
     return TCL_ERROR;
   }
-  LatticeStage stage;
+  LatticeDraft draft;
   std::vector<bool> given;
-  if (!kOptions.apply(interp, objc, objv, 1, stage, &given)) return TCL_ERROR;
-  const LatticeDef& def = stage.def;
+  if (!kOptions.apply(interp, objc, objv, 1, draft, &given)) return TCL_ERROR;
+  const LatticeDef& def = draft.def;
   if (!given[kSize]) return fail(interp, "VALUE SIZE", "lattice create needs -size {Lx Ly}");
   if (given[kCells] == given[kSpacing])
     return fail(interp, "VALUE CELLS", "lattice create needs exactly one of -cells and -spacing");
@@ -198,15 +198,15 @@ int LatticeCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
 int LatticeConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   Session& s = sessionOf(data);
   const int code = guarded(interp, [&] {
-    LatticeStage stage = LatticeStage::of(s.manager.lattice().params());
+    LatticeDraft draft = LatticeDraft::of(s.manager.lattice().params());
     if (objc == 1) {
-      Tcl_SetObjResult(interp, kOptions.all(stage));
+      Tcl_SetObjResult(interp, kOptions.all(draft));
       return TCL_OK;
     }
     if (objc == 2) {  // like Tk: "configure -option" reports that option
       const int k = optionIndex(interp, objv[1], kOptions.specs());
       if (k < 0) return TCL_ERROR;
-      Tcl_SetObjResult(interp, kOptions.get(stage, k));
+      Tcl_SetObjResult(interp, kOptions.get(draft, k));
       return TCL_OK;
     }
     if (objc % 2 == 0) {
@@ -214,8 +214,8 @@ int LatticeConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
       return TCL_ERROR;
     }
     std::vector<bool> given;
-    if (!kOptions.apply(interp, objc, objv, 1, stage, &given)) return TCL_ERROR;
-    LatticeDef& def = stage.def;  // (a new density: the kernel refuses it)
+    if (!kOptions.apply(interp, objc, objv, 1, draft, &given)) return TCL_ERROR;
+    LatticeDef& def = draft.def;  // (a new density: the kernel refuses it)
     // Keep the timestep unless tau is what changed. Neither given: the two
     // of viscosity, tau and timestep the lattice was given, not all three
     // resolved (which would give the timestep again to the last bit or not).
@@ -238,10 +238,10 @@ int LatticeCget(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
     return TCL_ERROR;
   }
   return guarded(interp, [&] {
-    const LatticeStage stage = LatticeStage::of(s.manager.lattice().params());
+    const LatticeDraft draft = LatticeDraft::of(s.manager.lattice().params());
     const int k = optionIndex(interp, objv[1], kOptions.specs());
     if (k < 0) return TCL_ERROR;
-    Tcl_SetObjResult(interp, kOptions.get(stage, k));
+    Tcl_SetObjResult(interp, kOptions.get(draft, k));
     return TCL_OK;
   });
 }
@@ -338,76 +338,105 @@ int LatticeDelete(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
 
 // ---- obstacles ---------------------------------------------------------------
 
-const OptionSpec kRectOptions[] = {
-    {"-slip", "0|1", "specular (free-slip) walls instead of no-slip (default 0)"},
-    {"-id", "N", "the obstacle's id (default: the next free one)"},
-    {nullptr, nullptr, nullptr}};
+// An obstacle's -id: >= 0, or the next free one when not given (the
+// kernel's -1).
+template <class Obstacle>
+Option<Obstacle> idRow() {
+  return {.info = {.name = "-id",
+                   .synopsis = "N",
+                   .help = "the obstacle's id",
+                   .kind = ValueKind::integer,
+                   .range = {.min = 0},
+                   .defaultText = "the next free one"},
+          .get = [](const Obstacle& o) { return integerValue(o.id); },
+          .set = [](Obstacle& o, const OptionValue& v) { o.id = v.integer; }};
+}
 
-int ObstacleRect(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+const OptionTable<lb::RectObstacle> kRectOptions{
+    {.info = {.name = "-slip",
+              .synopsis = "0|1",
+              .help = "specular (free-slip) walls instead of no-slip",
+              .kind = ValueKind::boolean},
+     .get = [](const lb::RectObstacle& r) { return booleanValue(r.slip); },
+     .set = [](lb::RectObstacle& r, const OptionValue& v) { r.slip = v.boolean; }},
+    idRow<lb::RectObstacle>()};
+
+const OptionTable<lb::CircleObstacle> kCircleOptions{
+    {.info = {.name = "-outside",
+              .synopsis = "0|1",
+              .help = "solid outside the circle instead of inside: a container",
+              .kind = ValueKind::boolean},
+     .get = [](const lb::CircleObstacle& c) { return booleanValue(c.outside); },
+     .set = [](lb::CircleObstacle& c, const OptionValue& v) { c.outside = v.boolean; }},
+    {.info = {.name = "-velocity",
+              .synopsis = "{vx vy w}",
+              .help = "translation and rotation rate of the wall",
+              .kind = ValueKind::vec3,
+              .unit = "length/time, 1/time"},
+     .get =
+         [](const lb::CircleObstacle& c) {
+           return vec3Value({c.velocity.x(), c.velocity.y(), c.spin});
+         },
+     .set =
+         [](lb::CircleObstacle& c, const OptionValue& v) {
+           c.velocity = Vec2(v.vec3.x(), v.vec3.y());
+           c.spin = v.vec3.z();
+         }},
+    idRow<lb::CircleObstacle>()};
+
+// The defaults the tables' help shows: an obstacle given no option.
+template <class Obstacle>
+Obstacle defaultObstacle() {
+  Obstacle o;
+  o.id = -1;
+  return o;
+}
+
+// lattice obstacle rect|circle GEOMETRY ?-option value ...? -> id; the
+// geometry ({x0 y0 x1 y1} or {cx cy r}) is checked by the kernel.
+template <class Obstacle>
+int addObstacle(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[],
+                const char* geometry, int numbers, const OptionTable<Obstacle>& options,
+                const std::function<void(const std::vector<double>&, Obstacle&)>& place,
+                int (lb::Lattice::*add)(const Obstacle&)) {
   Session& s = sessionOf(data);
   if (objc < 2 || objc % 2 == 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "{x0 y0 x1 y1} ?-slip 0|1? ?-id N?");
+    std::string usage = std::string(geometry);
+    for (int k = 0; k < options.size(); ++k)
+      usage += std::string(" ?") + options.info(k).name + " " + options.info(k).synopsis + "?";
+    Tcl_WrongNumArgs(interp, 1, objv, usage.c_str());
     return TCL_ERROR;
   }
-  std::vector<double> box;
-  if (!getDoubles(interp, objv[1], "rect", 4, box)) return TCL_ERROR;
-  lb::RectObstacle r;
-  r.id = -1;
-  r.lo = Vec2(box[0], box[1]);
-  r.hi = Vec2(box[2], box[3]);
-  if (!parseOptions(interp, objc, objv, 2, kRectOptions, [&](int k, Tcl_Obj* v) {
-        if (k == 0) return getBool(interp, v, "-slip", r.slip);
-        if (!getInt(interp, v, "-id", r.id)) return false;
-        if (r.id < 0)
-          return reject(interp, "VALUE ID", "-id must be >= 0, got " + std::to_string(r.id));
-        return true;
-      }))
+  std::vector<double> numbersGiven;
+  if (!getDoubles(interp, objv[1], numbers == 4 ? "rect" : "circle", numbers, numbersGiven))
     return TCL_ERROR;
+  Obstacle o = defaultObstacle<Obstacle>();
+  place(numbersGiven, o);
+  if (!options.apply(interp, objc, objv, 2, o)) return TCL_ERROR;
   return guarded(interp, [&] {
-    Tcl_SetObjResult(interp, Tcl_NewIntObj(s.manager.lattice().addObstacle(r)));
+    Tcl_SetObjResult(interp, Tcl_NewIntObj((s.manager.lattice().*add)(o)));
     return TCL_OK;
   });
 }
 
-const OptionSpec kCircleOptions[] = {
-    {"-outside", "0|1", "solid outside the circle instead of inside: a container (default 0)"},
-    {"-velocity", "{vx vy w}", "translation and rotation rate of the wall (default {0 0 0})"},
-    {"-id", "N", "the obstacle's id (default: the next free one)"},
-    {nullptr, nullptr, nullptr}};
+int ObstacleRect(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  return addObstacle<lb::RectObstacle>(
+      data, interp, objc, objv, "{x0 y0 x1 y1}", 4, kRectOptions,
+      [](const std::vector<double>& b, lb::RectObstacle& r) {
+        r.lo = Vec2(b[0], b[1]);
+        r.hi = Vec2(b[2], b[3]);
+      },
+      &lb::Lattice::addObstacle);
+}
 
 int ObstacleCircle(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  Session& s = sessionOf(data);
-  if (objc < 2 || objc % 2 == 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, "{cx cy r} ?-outside 0|1? ?-velocity {vx vy w}? ?-id N?");
-    return TCL_ERROR;
-  }
-  std::vector<double> circle;
-  if (!getDoubles(interp, objv[1], "circle", 3, circle)) return TCL_ERROR;
-  lb::CircleObstacle c;
-  c.id = -1;
-  c.centre = Vec2(circle[0], circle[1]);
-  c.radius = circle[2];
-  if (!(c.radius > 0))
-    return fail(interp, "VALUE RADIUS", "circle radius must be > 0, got " + formatNumber(c.radius));
-  if (!parseOptions(interp, objc, objv, 2, kCircleOptions, [&](int k, Tcl_Obj* v) {
-        if (k == 0) return getBool(interp, v, "-outside", c.outside);
-        if (k == 1) {
-          std::vector<double> vel;
-          if (!getDoubles(interp, v, "-velocity", 3, vel)) return false;
-          c.velocity = Vec2(vel[0], vel[1]);
-          c.spin = vel[2];
-          return true;
-        }
-        if (!getInt(interp, v, "-id", c.id)) return false;
-        if (c.id < 0)
-          return reject(interp, "VALUE ID", "-id must be >= 0, got " + std::to_string(c.id));
-        return true;
-      }))
-    return TCL_ERROR;
-  return guarded(interp, [&] {
-    Tcl_SetObjResult(interp, Tcl_NewIntObj(s.manager.lattice().addCircle(c)));
-    return TCL_OK;
-  });
+  return addObstacle<lb::CircleObstacle>(
+      data, interp, objc, objv, "{cx cy r}", 3, kCircleOptions,
+      [](const std::vector<double>& c, lb::CircleObstacle& o) {
+        o.centre = Vec2(c[0], c[1]);
+        o.radius = c[2];
+      },
+      &lb::Lattice::addCircle);
 }
 
 bool getObstacleId(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int& id) {

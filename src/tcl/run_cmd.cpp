@@ -205,8 +205,7 @@ int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     if (advance(s) != TCL_OK) return TCL_ERROR;
     computeSeconds += std::chrono::duration<double>(Clock::now() - t1).count();
     if (s.manager.hasLattice())  // the rate so far, so that -every scripts can report it
-      s.manager.setMlups(double(s.manager.lattice().nodes()) * double(done + 1) / computeSeconds /
-                         1e6);
+      s.mlups = double(s.manager.lattice().nodes()) * double(done + 1) / computeSeconds / 1e6;
     if (s.runSample && s.runSampleEvery > 0 && (done + 1) % s.runSampleEvery == 0) {
       const int code = sample(s);
       if (code != TCL_OK) return code;
@@ -244,6 +243,7 @@ int Reset(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) 
   const int code = closeRecorders(s, nullptr);
   s.manager.reset();
   s.lastRun = sim::RunRecord();
+  s.mlups = 0.0;
   return code;
 }
 

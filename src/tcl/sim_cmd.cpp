@@ -20,7 +20,7 @@ const char* const kCouplingNames[] = {"explicit", "implicit", nullptr};
 
 // What sim configure sets, staged: every value converted and checked before
 // any reaches the Manager.
-struct SimStage {
+struct SimDraft {
   double timestep = 0;
   int threads = 1, integrator = 0, substeps = 1;
   Vec2 gravity = Vec2::Zero();
@@ -28,10 +28,10 @@ struct SimStage {
   coupling::Settings coupled;
   int accuracy = kCustomAccuracy;
 
-  static SimStage of(const sim::Manager& m) {
-    return {m.timestep(), m.threads(),        int(m.assembly().integrator),
-            m.substeps(), m.gravity(),        m.assembly().maxOverlap(),
-            m.coupling(), matchingAccuracy(m)};
+  static SimDraft of(const sim::Manager& m) {
+    return {m.timestep(),         m.threads(),        int(m.assembly().integrator),
+            m.substeps(),         m.gravity(),        m.assembly().maxOverlap(),
+            m.couplingSettings(), matchingAccuracy(m)};
   }
 };
 
@@ -41,28 +41,28 @@ int solidRatioChoice(int subcells) {
   return 0;
 }
 
-using Row = Option<SimStage>;
-const OptionTable<SimStage> kOptions{
+using Row = Option<SimDraft>;
+const OptionTable<SimDraft> kOptions{
     Row{{"-timestep",
          "dt",
          "fix the timestep (a lattice's tau then follows from it)",
          ValueKind::real,
          "time",
          {.min = 0, .minOpen = true}},
-        [](const SimStage& s) { return realValue(s.timestep); },
-        [](SimStage& s, const OptionValue& v) { s.timestep = v.real; }},
+        [](const SimDraft& s) { return realValue(s.timestep); },
+        [](SimDraft& s, const OptionValue& v) { s.timestep = v.real; }},
     Row{{"-threads",
          "n",
          "threads for the step (results do not depend on it)",
          ValueKind::integer,
          "",
          {.min = 1, .max = sim::Manager::kMaxThreads}},
-        [](const SimStage& s) { return integerValue(s.threads); },
-        [](SimStage& s, const OptionValue& v) { s.threads = v.integer; }},
+        [](const SimDraft& s) { return integerValue(s.threads); },
+        [](SimDraft& s, const OptionValue& v) { s.threads = v.integer; }},
     Row{{"-gravity", "{gx gy}", "gravitational acceleration on the elements", ValueKind::vec2,
          "length/time^2"},
-        [](const SimStage& s) { return vecValue(s.gravity); },
-        [](SimStage& s, const OptionValue& v) { s.gravity = v.vec; }},
+        [](const SimDraft& s) { return vecValue(s.gravity); },
+        [](SimDraft& s, const OptionValue& v) { s.gravity = v.vec; }},
     Row{{"-integrator",
          "central|euler|verlet",
          "element integrator: central difference, the thesis's first-order scheme, velocity "
@@ -71,16 +71,16 @@ const OptionTable<SimStage> kOptions{
          "",
          {},
          dem::integratorNames},
-        [](const SimStage& s) { return choiceValue(s.integrator); },
-        [](SimStage& s, const OptionValue& v) { s.integrator = v.choice; }},
+        [](const SimDraft& s) { return choiceValue(s.integrator); },
+        [](SimDraft& s, const OptionValue& v) { s.integrator = v.choice; }},
     Row{{"-maxoverlap",
          "f",
          "a contact overlapping more than f of the smaller element stops the run",
          ValueKind::real,
          "",
          {.min = 0, .max = dem::Assembly::kMaxOverlapLimit, .minOpen = true}},
-        [](const SimStage& s) { return realValue(s.maxOverlap); },
-        [](SimStage& s, const OptionValue& v) { s.maxOverlap = v.real; }},
+        [](const SimDraft& s) { return realValue(s.maxOverlap); },
+        [](SimDraft& s, const OptionValue& v) { s.maxOverlap = v.real; }},
     Row{{"-solidratio",
          "exact|1|2|4|8",
          "solid ratio of covered cells: exact areas, or n x n subcell centres per cell (1: the "
@@ -90,8 +90,8 @@ const OptionTable<SimStage> kOptions{
          {},
          kSolidRatioNames,
          "solid ratio"},
-        [](const SimStage& s) { return choiceValue(solidRatioChoice(s.coupled.subcells)); },
-        [](SimStage& s, const OptionValue& v) {
+        [](const SimDraft& s) { return choiceValue(solidRatioChoice(s.coupled.subcells)); },
+        [](SimDraft& s, const OptionValue& v) {
           s.coupled.subcells = kSolidRatioSubcells[v.choice];
         }},
     Row{{"-substeps",
@@ -100,12 +100,12 @@ const OptionTable<SimStage> kOptions{
          ValueKind::integer,
          "",
          {.min = 1, .max = sim::Manager::kMaxSubsteps}},
-        [](const SimStage& s) { return integerValue(s.substeps); },
-        [](SimStage& s, const OptionValue& v) { s.substeps = v.integer; }},
+        [](const SimDraft& s) { return integerValue(s.substeps); },
+        [](SimDraft& s, const OptionValue& v) { s.substeps = v.integer; }},
     Row{{"-buoyancy", "0|1", "static buoyancy -rho_f A g on elements in the fluid",
          ValueKind::boolean},
-        [](const SimStage& s) { return booleanValue(s.coupled.buoyancy); },
-        [](SimStage& s, const OptionValue& v) { s.coupled.buoyancy = v.boolean; }},
+        [](const SimDraft& s) { return booleanValue(s.coupled.buoyancy); },
+        [](SimDraft& s, const OptionValue& v) { s.coupled.buoyancy = v.boolean; }},
     Row{{"-share",
          "coverage|equal",
          "force of a cell covered by several solids: by coverage or equal shares (the thesis's)",
@@ -113,8 +113,8 @@ const OptionTable<SimStage> kOptions{
          "",
          {},
          coupling::shareNames},
-        [](const SimStage& s) { return choiceValue(int(s.coupled.share)); },
-        [](SimStage& s, const OptionValue& v) { s.coupled.share = coupling::Share(v.choice); }},
+        [](const SimDraft& s) { return choiceValue(int(s.coupled.share)); },
+        [](SimDraft& s, const OptionValue& v) { s.coupled.share = coupling::Share(v.choice); }},
     Row{{"-interior",
          "equilibrium|collide",
          "cells deep inside solids: set to the equilibrium at the solid velocity, or collided "
@@ -123,8 +123,8 @@ const OptionTable<SimStage> kOptions{
          "",
          {},
          kInteriorNames},
-        [](const SimStage& s) { return choiceValue(s.coupled.equilibriumInterior ? 0 : 1); },
-        [](SimStage& s, const OptionValue& v) { s.coupled.equilibriumInterior = v.choice == 0; }},
+        [](const SimDraft& s) { return choiceValue(s.coupled.equilibriumInterior ? 0 : 1); },
+        [](SimDraft& s, const OptionValue& v) { s.coupled.equilibriumInterior = v.choice == 0; }},
     Row{{"-coupling",
          "explicit|implicit",
          "velocity the fluid sees: the element's at the start of the step (the thesis's), or "
@@ -133,8 +133,8 @@ const OptionTable<SimStage> kOptions{
          "",
          {},
          kCouplingNames},
-        [](const SimStage& s) { return choiceValue(s.coupled.implicit ? 1 : 0); },
-        [](SimStage& s, const OptionValue& v) { s.coupled.implicit = v.choice == 1; }},
+        [](const SimDraft& s) { return choiceValue(s.coupled.implicit ? 1 : 0); },
+        [](SimDraft& s, const OptionValue& v) { s.coupled.implicit = v.choice == 1; }},
     Row{{"-accuracy",
          "draft|normal|fine",
          "a measured set of the accuracy knobs (docs/accuracy.md): the lattice's tau (its "
@@ -145,8 +145,8 @@ const OptionTable<SimStage> kOptions{
          "",
          {},
          kAccuracyNames},
-        [](const SimStage& s) { return choiceValue(s.accuracy); },
-        [](SimStage& s, const OptionValue& v) { s.accuracy = v.choice; }},
+        [](const SimDraft& s) { return choiceValue(s.accuracy); },
+        [](SimDraft& s, const OptionValue& v) { s.accuracy = v.choice; }},
 };
 enum {
   kTimestep = 0,
@@ -163,33 +163,33 @@ enum {
   kAccuracy
 };
 
-// The preset's step settings onto the stage, except those given with it.
-void stagePreset(SimStage& stage, std::vector<bool>& given) {
-  const AccuracyPreset& p = accuracyPreset(stage.accuracy);
-  if (!given[kSolidRatio]) stage.coupled.subcells = p.subcells;
-  if (!given[kCoupling]) stage.coupled.implicit = p.implicit;
-  if (!given[kIntegrator]) stage.integrator = int(p.integrator);
-  if (!given[kSubsteps]) stage.substeps = p.substeps, given[kSubsteps] = true;
+// The preset's step settings onto the draft, except those given with it.
+void draftPreset(SimDraft& draft, std::vector<bool>& given) {
+  const AccuracyPreset& p = accuracyPreset(draft.accuracy);
+  if (!given[kSolidRatio]) draft.coupled.subcells = p.subcells;
+  if (!given[kCoupling]) draft.coupled.implicit = p.implicit;
+  if (!given[kIntegrator]) draft.integrator = int(p.integrator);
+  if (!given[kSubsteps]) draft.substeps = p.substeps, given[kSubsteps] = true;
 }
 
 // The settings of a new session, for help's and `sim options`' defaults.
-const SimStage& defaults() {
-  static const SimStage d = SimStage::of(sim::Manager{});
+const SimDraft& defaults() {
+  static const SimDraft d = SimDraft::of(sim::Manager{});
   return d;
 }
 
 int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   Session& s = sessionOf(data);
   sim::Manager& m = s.manager;
-  SimStage stage = SimStage::of(m);
+  SimDraft draft = SimDraft::of(m);
   if (objc == 1) {
-    Tcl_SetObjResult(interp, kOptions.all(stage));
+    Tcl_SetObjResult(interp, kOptions.all(draft));
     return TCL_OK;
   }
   if (objc == 2) {
     const int k = optionIndex(interp, objv[1], kOptions.specs());
     if (k < 0) return TCL_ERROR;
-    Tcl_SetObjResult(interp, kOptions.get(stage, k));
+    Tcl_SetObjResult(interp, kOptions.get(draft, k));
     return TCL_OK;
   }
   if (objc % 2 == 0) {
@@ -198,15 +198,15 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
   }
   // Stage every value, validate, then commit: a refused option changes nothing.
   std::vector<bool> given;
-  if (!kOptions.apply(interp, objc, objv, 1, stage, &given)) return TCL_ERROR;
-  const bool preset = given[kAccuracy] && stage.accuracy != kCustomAccuracy;
-  if (preset) stagePreset(stage, given);
+  if (!kOptions.apply(interp, objc, objv, 1, draft, &given)) return TCL_ERROR;
+  const bool preset = given[kAccuracy] && draft.accuracy != kCustomAccuracy;
+  if (preset) draftPreset(draft, given);
   const int code = guarded(interp, [&] {
     // The only settings that can refuse, all checked before anything changes:
     // the preset's lattice (its tau sets the timestep), then the stepping.
     std::optional<lb::LatticeDef> latticeDef;
     if (preset && m.hasLattice()) {
-      latticeDef = presetLattice(m.lattice().params(), accuracyPreset(stage.accuracy));
+      latticeDef = presetLattice(m.lattice().params(), accuracyPreset(draft.accuracy));
       try {
         lb::resolve(*latticeDef);
       } catch (const Error& e) {
@@ -218,19 +218,19 @@ int SimConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
     if (latticeDef || given[kTimestep] || given[kSubsteps]) {
       try {
         m.configureStep(latticeDef,
-                        given[kTimestep] ? std::optional<double>(stage.timestep) : std::nullopt,
-                        given[kSubsteps] ? std::optional<int>(stage.substeps) : std::nullopt);
+                        given[kTimestep] ? std::optional<double>(draft.timestep) : std::nullopt,
+                        given[kSubsteps] ? std::optional<int>(draft.substeps) : std::nullopt);
       } catch (const Error& e) {
         fail(interp, e);
         noteOptionOnce(interp, given[kSubsteps] && !given[kTimestep] ? "-substeps" : "-timestep");
         return TCL_ERROR;
       }
     }
-    m.setCoupling(stage.coupled);
-    if (given[kThreads]) m.setThreads(stage.threads);
-    if (given[kGravity]) m.setGravity(stage.gravity);
-    m.assembly().integrator = static_cast<dem::Integrator>(stage.integrator);
-    m.assembly().setMaxOverlap(stage.maxOverlap);
+    m.setCouplingSettings(draft.coupled);
+    if (given[kThreads]) m.setThreads(draft.threads);
+    if (given[kGravity]) m.setGravity(draft.gravity);
+    m.assembly().integrator = static_cast<dem::Integrator>(draft.integrator);
+    m.assembly().setMaxOverlap(draft.maxOverlap);
     return TCL_OK;
   });
   flushWarnings(s);  // a preset's lattice warned of at once
@@ -244,7 +244,7 @@ int SimCget(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
   }
   const int k = optionIndex(interp, objv[1], kOptions.specs());
   if (k < 0) return TCL_ERROR;
-  Tcl_SetObjResult(interp, kOptions.get(SimStage::of(sessionOf(data).manager), k));
+  Tcl_SetObjResult(interp, kOptions.get(SimDraft::of(sessionOf(data).manager), k));
   return TCL_OK;
 }
 
@@ -272,37 +272,39 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
   Tcl_Obj* warnings = Tcl_NewListObj(0, nullptr);
   for (const sim::Warning& w : m.warnings())
     Tcl_ListObjAppendElement(nullptr, warnings, newString(withRemedy(w.text, w.remedy)));
-  const bool stable = !lattice || (std::isfinite(mach) && mach <= m.machStopLimit() && tau > 0.5);
+  const bool stable =
+      !lattice || (std::isfinite(mach) && mach <= m.machStopLimit() && tau > lb::kTauMin);
   // What the fluid exerted on all elements together in the last step.
   Vec2 fluidForce = Vec2::Zero();
   double fluidTorque = 0;
   const dem::Bodies& b = m.assembly().bodies();
   for (int s = 0; s < b.size(); ++s) fluidForce += b.fluidForce[s], fluidTorque += b.fluidTorque[s];
   Tcl_SetObjResult(
-      interp, newDict({{"time", newDouble(m.time())},
-                       {"step", Tcl_NewWideIntObj(m.stepCount())},
-                       {"timestep", newDouble(m.timestep())},
-                       {"tau", newDouble(tau)},
-                       {"mach", newDouble(mach)},
-                       {"elements", Tcl_NewIntObj(m.assembly().bodies().size())},
-                       {"contacts", Tcl_NewWideIntObj(Tcl_WideInt(m.assembly().touchingCount()))},
-                       {"bonds", Tcl_NewWideIntObj(Tcl_WideInt(m.assembly().bonds().size()))},
-                       {"broken", Tcl_NewWideIntObj(Tcl_WideInt(m.assembly().breaks().size()))},
-                       {"nodes", Tcl_NewWideIntObj(lattice ? Tcl_WideInt(m.lattice().nodes()) : 0)},
-                       {"mlups", newDouble(m.mlups())},
-                       {"stable", Tcl_NewBooleanObj(stable)},
-                       {"threads", Tcl_NewIntObj(m.threads())},
-                       {"warnings", warnings},
-                       {"kinetic", newDouble(m.assembly().kineticEnergy())},
-                       {"critical", newDouble(m.assembly().criticalTimestep())},
-                       {"stablestep", newDouble(m.assembly().timestepLimits().stable)},
-                       {"accuratestep", newDouble(m.assembly().timestepLimits().accurate)},
-                       {"covered", Tcl_NewWideIntObj(Tcl_WideInt(
-                                       m.coupled() ? m.lattice().coveredCells().size() : 0))},
-                       {"fluidforce", newVec2(fluidForce)},
-                       {"fluidtorque", newDouble(fluidTorque)},
-                       {"substeps", Tcl_NewIntObj(m.substeps())},
-                       {"passes", passesDict(session)}}));
+      interp,
+      newDict({{"time", newDouble(m.time())},
+               {"step", Tcl_NewWideIntObj(m.stepCount())},
+               {"timestep", newDouble(m.timestep())},
+               {"tau", newDouble(tau)},
+               {"mach", newDouble(mach)},
+               {"elements", Tcl_NewIntObj(m.assembly().bodies().size())},
+               {"contacts", Tcl_NewWideIntObj(Tcl_WideInt(m.assembly().touchingCount()))},
+               {"bonds", Tcl_NewWideIntObj(Tcl_WideInt(m.assembly().bonds().size()))},
+               {"broken", Tcl_NewWideIntObj(Tcl_WideInt(m.assembly().breaks().size()))},
+               {"nodes", Tcl_NewWideIntObj(lattice ? Tcl_WideInt(m.lattice().nodes()) : 0)},
+               {"mlups", newDouble(session.mlups)},
+               {"stable", Tcl_NewBooleanObj(stable)},
+               {"threads", Tcl_NewIntObj(m.threads())},
+               {"warnings", warnings},
+               {"kinetic", newDouble(m.assembly().kineticEnergy())},
+               {"critical", newDouble(m.assembly().criticalTimestep())},
+               {"stablestep", newDouble(m.assembly().timestepLimits().stable)},
+               {"accuratestep", newDouble(m.assembly().timestepLimits().accurate)},
+               {"covered", Tcl_NewWideIntObj(Tcl_WideInt(
+                               m.solidsCoverCells() ? m.lattice().coveredCells().size() : 0))},
+               {"fluidforce", newVec2(fluidForce)},
+               {"fluidtorque", newDouble(fluidTorque)},
+               {"substeps", Tcl_NewIntObj(m.substeps())},
+               {"passes", passesDict(session)}}));
   return TCL_OK;
 }
 

@@ -7,24 +7,24 @@ namespace sf::tcl {
 namespace {
 
 // What source create takes, converted and checked before the kernel sees it.
-struct SourceStage {
+struct SourceDraft {
   Vec2 acceleration = Vec2::Zero();
   double interval = 0;
   int limit = -1;
 };
 
-using Row = Option<SourceStage>;
-const OptionTable<SourceStage> kOptions{
+using Row = Option<SourceDraft>;
+const OptionTable<SourceDraft> kOptions{
     Row{{"-acceleration", "{ax ay}", "body acceleration of each clone", ValueKind::vec2,
          "length/time^2"},
-        [](const SourceStage& s) { return vecValue(s.acceleration); },
-        [](SourceStage& s, const OptionValue& v) { s.acceleration = v.vec; }},
+        [](const SourceDraft& s) { return vecValue(s.acceleration); },
+        [](SourceDraft& s, const OptionValue& v) { s.acceleration = v.vec; }},
     Row{{"-interval", "t", "least time between two clones", ValueKind::real, "time", {.min = 0}},
-        [](const SourceStage& s) { return realValue(s.interval); },
-        [](SourceStage& s, const OptionValue& v) { s.interval = v.real; }},
+        [](const SourceDraft& s) { return realValue(s.interval); },
+        [](SourceDraft& s, const OptionValue& v) { s.interval = v.real; }},
     Row{{"-limit", "n", "clones to make; -1 for no limit", ValueKind::integer, "", {.min = -1}},
-        [](const SourceStage& s) { return integerValue(s.limit); },
-        [](SourceStage& s, const OptionValue& v) { s.limit = v.integer; }},
+        [](const SourceDraft& s) { return integerValue(s.limit); },
+        [](SourceDraft& s, const OptionValue& v) { s.limit = v.integer; }},
 };
 
 int SourceCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
@@ -33,12 +33,12 @@ int SourceCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
     return TCL_ERROR;
   }
   int id = 0;
-  SourceStage stage;
+  SourceDraft draft;
   if (!getInt(interp, objv[1], "ID", id)) return TCL_ERROR;
-  if (!kOptions.apply(interp, objc, objv, 2, stage)) return TCL_ERROR;
+  if (!kOptions.apply(interp, objc, objv, 2, draft)) return TCL_ERROR;
   return guarded(interp, [&] {
-    sessionOf(data).manager.assembly().makeSource(id, stage.acceleration, stage.interval,
-                                                  stage.limit);
+    sessionOf(data).manager.assembly().makeSource(id, draft.acceleration, draft.interval,
+                                                  draft.limit);
     Tcl_SetObjResult(interp, Tcl_NewIntObj(id));
     return TCL_OK;
   });
@@ -97,7 +97,7 @@ int SourceOptions(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
     Tcl_WrongNumArgs(interp, 1, objv, nullptr);
     return TCL_ERROR;
   }
-  Tcl_SetObjResult(interp, kOptions.describe(SourceStage{}));
+  Tcl_SetObjResult(interp, kOptions.describe(SourceDraft{}));
   return TCL_OK;
 }
 
@@ -112,7 +112,7 @@ int SourceHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) 
                                        "n?   (element ID becomes a source)",
                                        "delete ID", "ids", "info ID   -> dict ... made clones",
                                        "options   -> create's options as dicts", "help"},
-                                      SourceStage{})));
+                                      SourceDraft{})));
   return TCL_OK;
 }
 

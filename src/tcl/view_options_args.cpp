@@ -77,21 +77,21 @@ bool getMaterialColors(Tcl_Interp* interp, Tcl_Obj* val, render::ViewOptions& v)
 }
 
 // What view configure, snapshot and output movie set, staged.
-struct ViewStage {
+struct ViewDraft {
   render::ViewOptions v;
   std::string offscreen;
   bool withOffscreen = false;  // view configure only
 };
 
 // A boolean row of the view.
-Option<ViewStage> flag(const char* name, const char* help, bool render::ViewOptions::*field) {
+Option<ViewDraft> flag(const char* name, const char* help, bool render::ViewOptions::*field) {
   return {{name, "0|1", help, ValueKind::boolean},
-          [field](const ViewStage& s) { return booleanValue(s.v.*field); },
-          [field](ViewStage& s, const OptionValue& x) { s.v.*field = x.boolean; }};
+          [field](const ViewDraft& s) { return booleanValue(s.v.*field); },
+          [field](ViewDraft& s, const OptionValue& x) { s.v.*field = x.boolean; }};
 }
 
-using Row = Option<ViewStage>;
-const OptionTable<ViewStage> kOptions{
+using Row = Option<ViewDraft>;
+const OptionTable<ViewDraft> kOptions{
     Row{{"-field",
          "none|nodes|solid|density|pressure|velocity|vorticity",
          "lattice field under the colour map ({}: velocity with a lattice, else none)",
@@ -103,10 +103,10 @@ const OptionTable<ViewStage> kOptions{
          nullptr,
          nullptr,
          true},
-        [](const ViewStage& s) {
+        [](const ViewDraft& s) {
           return s.v.field ? OptionValue{.choice = int(*s.v.field)} : OptionValue{.empty = true};
         },
-        [](ViewStage& s, const OptionValue& x) {
+        [](ViewDraft& s, const OptionValue& x) {
           if (x.empty)
             s.v.field.reset();
           else
@@ -117,10 +117,10 @@ const OptionTable<ViewStage> kOptions{
     Row{{"-range", "{lo hi}", "the colour map's range ({}: the values shown)", ValueKind::custom},
         nullptr,
         nullptr,
-        [](Tcl_Interp* interp, Tcl_Obj* x, ViewStage& s) {
+        [](Tcl_Interp* interp, Tcl_Obj* x, ViewDraft& s) {
           return getOptionalDoubles(interp, x, "-range", s.v.range);
         },
-        [](const ViewStage& s) {
+        [](const ViewDraft& s) {
           return s.v.range ? doubles(s.v.range->data(), 2) : Tcl_NewObj();
         }},
     Row{{"-colorby",
@@ -131,16 +131,16 @@ const OptionTable<ViewStage> kOptions{
          {},
          render::colorByNames,
          "colorby"},
-        [](const ViewStage& s) { return OptionValue{.choice = int(s.v.colorBy)}; },
-        [](ViewStage& s, const OptionValue& x) { s.v.colorBy = render::ColorBy(x.choice); }},
+        [](const ViewDraft& s) { return OptionValue{.choice = int(s.v.colorBy)}; },
+        [](ViewDraft& s, const OptionValue& x) { s.v.colorBy = render::ColorBy(x.choice); }},
     Row{{"-materialcolors", "{name #rrggbb ...}", "fill colours of materials (else a palette)",
          ValueKind::custom},
         nullptr,
         nullptr,
-        [](Tcl_Interp* interp, Tcl_Obj* x, ViewStage& s) {
+        [](Tcl_Interp* interp, Tcl_Obj* x, ViewDraft& s) {
           return getMaterialColors(interp, x, s.v);
         },
-        [](const ViewStage& s) {
+        [](const ViewDraft& s) {
           Tcl_Obj* dict = Tcl_NewDictObj();
           for (const auto& [name, colour] : s.v.materialColors)
             Tcl_DictObjPut(nullptr, dict, newString(name), newString(render::formatColor(colour)));
@@ -159,10 +159,10 @@ const OptionTable<ViewStage> kOptions{
     Row{{"-size", "{W H}", "picture size in pixels", ValueKind::custom},
         nullptr,
         nullptr,
-        [](Tcl_Interp* interp, Tcl_Obj* x, ViewStage& s) {
+        [](Tcl_Interp* interp, Tcl_Obj* x, ViewDraft& s) {
           return getSize(interp, x, s.v.width, s.v.height);
         },
-        [](const ViewStage& s) {
+        [](const ViewDraft& s) {
           Tcl_Obj* wh[2] = {Tcl_NewIntObj(s.v.width), Tcl_NewIntObj(s.v.height)};
           return Tcl_NewListObj(2, wh);
         }},
@@ -170,17 +170,17 @@ const OptionTable<ViewStage> kOptions{
          ValueKind::custom},
         nullptr,
         nullptr,
-        [](Tcl_Interp* interp, Tcl_Obj* x, ViewStage& s) {
+        [](Tcl_Interp* interp, Tcl_Obj* x, ViewDraft& s) {
           return getOptionalDoubles(interp, x, "-region", s.v.region);
         },
-        [](const ViewStage& s) {
+        [](const ViewDraft& s) {
           return s.v.region ? doubles(s.v.region->data(), 4) : Tcl_NewObj();
         }},
     Row{{"-offscreen", "auto|osmesa|egl", "headless OpenGL back end (before the first picture)",
          ValueKind::custom},
         nullptr,
         nullptr,
-        [](Tcl_Interp* interp, Tcl_Obj* x, ViewStage& s) {
+        [](Tcl_Interp* interp, Tcl_Obj* x, ViewDraft& s) {
           if (!s.withOffscreen)
             return reject(interp, "VALUE OPTION",
                           "-offscreen is set with view configure, before the first picture");
@@ -189,12 +189,12 @@ const OptionTable<ViewStage> kOptions{
           s.offscreen = kOffscreenNames[choice];
           return true;
         },
-        [](const ViewStage& s) { return newString(s.offscreen); }},
+        [](const ViewDraft& s) { return newString(s.offscreen); }},
 };
 constexpr int kOffscreen = 15;
 
-const ViewStage& defaults() {
-  static const ViewStage d{render::ViewOptions{}, "auto", true};
+const ViewDraft& defaults() {
+  static const ViewDraft d{render::ViewOptions{}, "auto", true};
   return d;
 }
 
@@ -203,27 +203,27 @@ const ViewStage& defaults() {
 bool parseViewOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first,
                       render::ViewOptions& v, std::string* offscreen) {
   // Stage into a copy: a refused option changes nothing.
-  ViewStage staged{v, offscreen ? *offscreen : std::string(), offscreen != nullptr};
-  if (!kOptions.apply(interp, objc, objv, first, staged)) return false;
+  ViewDraft draft{v, offscreen ? *offscreen : std::string(), offscreen != nullptr};
+  if (!kOptions.apply(interp, objc, objv, first, draft)) return false;
   const int code = guarded(interp, [&] {
-    render::checkOptions(staged.v);
+    render::checkOptions(draft.v);
     return TCL_OK;
   });
   if (code != TCL_OK) return false;
-  v = std::move(staged.v);
-  if (offscreen) *offscreen = staged.offscreen;
+  v = std::move(draft.v);
+  if (offscreen) *offscreen = draft.offscreen;
   return true;
 }
 
 Tcl_Obj* viewOptionList(const render::ViewOptions& v, const std::string& offscreen) {
-  return kOptions.all(ViewStage{v, offscreen, true});
+  return kOptions.all(ViewDraft{v, offscreen, true});
 }
 
 Tcl_Obj* viewOptionValue(Tcl_Interp* interp, Tcl_Obj* name, const render::ViewOptions& v,
                          const std::string& offscreen) {
   const int k = optionIndex(interp, name, kOptions.specs());
   if (k < 0) return nullptr;
-  return kOptions.get(ViewStage{v, offscreen, true}, k);
+  return kOptions.get(ViewDraft{v, offscreen, true}, k);
 }
 
 std::string viewOptionHelp(bool withOffscreen) {

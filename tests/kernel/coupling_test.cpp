@@ -56,7 +56,7 @@ TEST(Coupling, DiscMovingThroughStillFluidIsDecelerated) {
   EXPECT_LT(b.fluidForce[s].x(), 0.0);  // drag opposes the motion
   EXPECT_LT(std::abs(b.fluidForce[s].y()), 1e-9 * std::abs(b.fluidForce[s].x()));  // symmetry
   EXPECT_GT(m.lattice().momentum().x(), 0.0);  // the fluid is dragged along
-  EXPECT_TRUE(m.coupled());
+  EXPECT_TRUE(m.solidsCoverCells());
   EXPECT_GT(m.coupler().coveredCells(), std::size_t(pi * 6.4 * 6.4 * 0.9));
 }
 
@@ -66,7 +66,7 @@ TEST(Coupling, FreeDiscInPeriodicBoxConservesTotalMomentum) {
     m.createLattice(test::periodicSquare(1.0, 64, 0.01));
     coupling::Settings settings;
     settings.equilibriumInterior = equilibriumInterior;
-    m.setCoupling(settings);
+    m.setCouplingSettings(settings);
     const int mat = test::softMaterial(m, 3.0);
     test::addDisc(m, mat, Vec2(0.43, 0.52), 0.117, Vec2(0.03, -0.017), 0.4);
     m.step();
@@ -94,7 +94,7 @@ TEST(Coupling, ImplicitCouplingKeepsLightDiscsStable) {
       m.createLattice(test::periodicSquare(1.0, 64, 0.01));
       coupling::Settings settings;
       settings.implicit = implicit;
-      m.setCoupling(settings);
+      m.setCouplingSettings(settings);
       test::addDisc(m, test::softMaterial(m, density), Vec2(0.43, 0.52), 0.117, Vec2(0.03, -0.017),
                     0.4);
       m.step();
@@ -140,9 +140,9 @@ TEST(Coupling, BuoyancyGivesTheSubmergedWeight) {
   for (int k = 0; k < 100; ++k) m.step();
   EXPECT_LT(b.v[b.slot(heavy)].y(), -1e-5);  // the heavy one sinks
   // Without buoyancy the static part is gone.
-  coupling::Settings s = m.coupling();
+  coupling::Settings s = m.couplingSettings();
   s.buoyancy = false;
-  m.setCoupling(s);
+  m.setCouplingSettings(s);
   m.step();
   EXPECT_EQ(b.buoyancy[f].y(), 0.0);
 }
@@ -164,7 +164,7 @@ TEST(Coupling, FirstCoupledStepOfANewElementFeelsNoKick) {
     m.setGravity(Vec2(0, -g));
     coupling::Settings settings;
     settings.implicit = implicit;
-    m.setCoupling(settings);
+    m.setCouplingSettings(settings);
     m.assembly().integrator = integrator;
     const std::uint8_t hold = held ? dem::holdX | dem::holdY | dem::holdRotation : 0;
     test::addDisc(m, test::softMaterial(m, density), Vec2(0.503, 0.502), r, Vec2::Zero(), 0, hold);
@@ -297,9 +297,9 @@ TEST(Coupling, EachSolidGetsTheExchangeOfItsOwnCells) {
     sim::Manager m;
     const int n = 64;
     m.createLattice(test::periodicSquare(1.0, n, 0.01));
-    coupling::Settings settings = m.coupling();
+    coupling::Settings settings = m.couplingSettings();
     settings.share = share;
-    m.setCoupling(settings);
+    m.setCouplingSettings(settings);
     const int mat = test::softMaterial(m, 3.0);
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u(0, 1);
@@ -451,12 +451,12 @@ TEST(Coupling, ElementsAllBeyondTheWallsPayNoCouplingPass) {
   const int mat = test::softMaterial(m, 2.0);
   test::addDisc(m, mat, Vec2(10, 30), 3.0, Vec2(0, -0.05));  // falls towards the lattice
   m.step();
-  EXPECT_FALSE(m.coupled());
+  EXPECT_FALSE(m.solidsCoverCells());
   EXPECT_EQ(m.profile()[Stage::coverageMeasure].steps, 0);
   EXPECT_EQ(m.assembly().bodies().fluidForce[0], Vec2::Zero());
   // Once it reaches a cell of the lattice's wall side, the coupling runs.
-  for (int k = 0; k < 200 && !m.coupled(); ++k) m.step();
-  EXPECT_TRUE(m.coupled());
+  for (int k = 0; k < 200 && !m.solidsCoverCells(); ++k) m.step();
+  EXPECT_TRUE(m.solidsCoverCells());
   EXPECT_LT(m.assembly().bodies().x[0].y() - 3.0, 21.0 + 1e-9);
 }
 
@@ -464,7 +464,7 @@ TEST(Coupling, SceneWithoutSolidsPaysNoCouplingPass) {
   sim::Manager m;
   m.createLattice(test::periodicSquare(1.0, 32, 0.01));
   for (int k = 0; k < 10; ++k) m.step();
-  EXPECT_FALSE(m.coupled());
+  EXPECT_FALSE(m.solidsCoverCells());
   EXPECT_EQ(m.profile()[Stage::coverageMeasure].steps, 0);
   EXPECT_EQ(m.profile()[Stage::fluidForces].steps, 0);
   EXPECT_EQ(m.lattice().coveredCells().size(), 0u);

@@ -98,7 +98,7 @@ TEST(StepWatch, ElementTooLightForTheExplicitCoupling) {
   implicit.implicit = true;
   sim::Manager n;  // the same scene, implicit: stable, no warning
   n.createLattice(test::periodicSquare(32.0, 32, 0.1, 0.8));
-  n.setCoupling(implicit);
+  n.setCouplingSettings(implicit);
   test::addDisc(n, test::softMaterial(n, 0.5), Vec2(16, 16), 5.0);
   EXPECT_EQ(count(runFor(n, 3), WarningCode::lightElement), 0);
 }

@@ -208,7 +208,7 @@ void coupledScene(sim::Manager& m, int threads, bool implicit) {
   m.createLattice(def);
   coupling::Settings settings;
   settings.implicit = implicit;
-  m.setCoupling(settings);
+  m.setCouplingSettings(settings);
   const lb::ResolvedLattice& p = m.lattice().params();
   const double h = p.h, c = p.latticeSpeed();
   m.setGravity(Vec2(0, -2e-4 * c / p.dt));

@@ -91,7 +91,7 @@ void scene(sim::Manager& m, lb::Collision c, lb::ForceScheme s, bool open, bool 
   if (!elements) return;
   coupling::Settings settings;
   settings.implicit = implicit;
-  m.setCoupling(settings);
+  m.setCouplingSettings(settings);
   const int mat = test::softMaterial(m, 1.5);
   test::addDisc(m, mat, Vec2(6, 22), 2.6, Vec2(0.01, -0.002), 0.002);
   test::addDisc(m, mat, Vec2(36, 9), 3.1, Vec2(-0.004, 0.003), -0.001);

@@ -57,7 +57,7 @@ inline void buildCouette(sim::Manager& m, const CouetteSetup& s) {
   def.tau = s.tau;
   for (auto& side : def.sides) side = lb::SideDef{lb::SideKind::periodic};
   m.createLattice(def);
-  m.setCoupling(s.coupling);
+  m.setCouplingSettings(s.coupling);
   lb::Lattice& l = m.lattice();
   l.addCircle({0, Vec2(0.5, 0.5), s.r1, false, s.translate, s.omega1});
   l.addCircle({1, Vec2(0.5, 0.5), s.r2, true, s.translate, s.omega2});

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "sandflow/dem/shape.hpp"
 #include "sandflow/geometry/vec2.hpp"
 
 namespace sf::dem {
@@ -20,5 +21,18 @@ struct ElementEdit {
   std::optional<std::uint8_t> hold;
   std::optional<double> stress;  // a wall's servo stress; NaN removes the servo
 };
+
+// The parts of an edit that only some shapes take (Assembly::configure
+// refuses them on the others; the property panel offers them only there).
+struct ShapeParts {
+  bool radius = false;  // discs
+  bool ends = false;    // walls: from, to
+  bool stress = false;  // walls: a servo stress
+};
+constexpr ShapeParts partsOf(ShapeType type) {
+  return {.radius = type == ShapeType::disc,
+          .ends = type == ShapeType::wall,
+          .stress = type == ShapeType::wall};
+}
 
 }  // namespace sf::dem

@@ -41,6 +41,11 @@ struct LatticeDef {
                                   SideDef{SideKind::noslip}, SideDef{SideKind::noslip}};
 };
 
+// BGK is stable only for tau above 1/2 (zero or negative viscosity below).
+inline constexpr double kTauMin = 0.5;
+// The refusal of a tau at or below kTauMin (the lattice's and the commands').
+std::string unstableTau(double tau);
+
 // A definition with every derived quantity filled in and checked.
 struct ResolvedLattice {
   LatticeDef def;

@@ -58,10 +58,11 @@ class Manager {
 
   // Fluid-solid coupling (physics.md §2, §3, §5), used whenever the lattice has
   // something on it that covers cells: elements or circular walls.
-  const coupling::Settings& coupling() const { return coupling_; }
-  void setCoupling(const coupling::Settings& settings);
+  const coupling::Settings& couplingSettings() const { return coupling_; }
+  void setCouplingSettings(const coupling::Settings& settings);
   const coupling::Coupler& coupler() const { return coupler_; }
-  bool coupled() const { return coupled_; }
+  // Whether the last step had solids on the lattice (elements, circles) covering cells.
+  bool solidsCoverCells() const { return coversCells_; }
   // Element steps per fluid step, each dt / n, under the fluid force of the step.
   int substeps() const { return substeps_; }
   void setSubsteps(int n) { setStepping(std::nullopt, n); }
@@ -100,8 +101,6 @@ class Manager {
   std::uint32_t stateHash() const;
 
   // Million lattice-node updates per second of the last `run`.
-  double mlups() const { return mlups_; }
-  void setMlups(double m) { mlups_ = m; }
 
  private:
   // Points the lattice's, the coupler's and the elements' thread count at
@@ -123,10 +122,9 @@ class Manager {
   double time_ = 0.0;
   long long steps_ = 0;
   long long latticeBorn_ = -1000000000;  // steps_ when the lattice was made (checkOutrun)
-  double mlups_ = 0.0;
   coupling::Settings coupling_;
   coupling::Coupler coupler_;
-  bool coupled_ = false;
+  bool coversCells_ = false;
   int substeps_ = 1;
   Profile profile_;
   StepWatch watch_;

@@ -1,9 +1,9 @@
 #pragma once
 // Option tables: each option of a configurable noun is one row -- name, value
 // kind, unit, range, choices, help, and how it reads and writes the noun's
-// staged settings. configure, cget, help, `NOUN options` (which the
-// workbench's property panel and the documentation read) all come from the
-// rows, so an option's range is written once.
+// draft of its settings (applied whole or not at all). configure, cget, help, `NOUN options` (which
+// the workbench's property panel and the documentation read) all come from the rows, so an option's
+// range is written once.
 #include <functional>
 #include <initializer_list>
 #include <limits>
@@ -92,26 +92,26 @@ Tcl_Obj* optionObj(const OptionInfo& info, const OptionValue& value);
 // choices default (empty where it does not apply).
 Tcl_Obj* describeOption(const OptionInfo& info, Tcl_Obj* defaultValue);
 
-template <class Stage>
+template <class Draft>
 struct Option {
   OptionInfo info;
-  std::function<OptionValue(const Stage&)> get;
-  std::function<void(Stage&, const OptionValue&)> set;
+  std::function<OptionValue(const Draft&)> get;
+  std::function<void(Draft&, const OptionValue&)> set;
   // Instead of get and set (ValueKind::custom, or a row whose choices are not
-  // fixed): convert onto the stage (false with the error set), and show.
-  std::function<bool(Tcl_Interp*, Tcl_Obj*, Stage&)> parse = nullptr;
-  std::function<Tcl_Obj*(const Stage&)> show = nullptr;
+  // fixed): convert onto the draft (false with the error set), and show.
+  std::function<bool(Tcl_Interp*, Tcl_Obj*, Draft&)> parse = nullptr;
+  std::function<Tcl_Obj*(const Draft&)> show = nullptr;
 };
 
 // The rows of one noun. Keep it static: Tcl caches the name table by address.
-template <class Stage>
+template <class Draft>
 class OptionTable {
  public:
   // inTableOrder: apply converts the options in the rows' order, not the
   // command's (a lattice's -periodic before its -walls).
-  explicit OptionTable(std::initializer_list<Option<Stage>> rows, bool inTableOrder = false)
+  explicit OptionTable(std::initializer_list<Option<Draft>> rows, bool inTableOrder = false)
       : rows_(rows), inTableOrder_(inTableOrder) {
-    for (const Option<Stage>& r : rows_)
+    for (const Option<Draft>& r : rows_)
       specs_.push_back({r.info.name, r.info.synopsis, r.info.help});
     specs_.push_back({nullptr, nullptr, nullptr});
   }
@@ -120,20 +120,20 @@ class OptionTable {
   // The plain rows, for parseOptions, optionIndex and helpText.
   const OptionSpec* specs() const { return specs_.data(); }
 
-  // Reads "-option value" pairs from objv[first..) onto the stage; `given`
+  // Reads "-option value" pairs from objv[first..) onto the draft; `given`
   // marks the options that came. False with the Tcl error set (and errorInfo
-  // naming the option) on the first bad one; the stage is then half written.
-  bool apply(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first, Stage& stage,
+  // naming the option) on the first bad one; the draft is then half written.
+  bool apply(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first, Draft& draft,
              std::vector<bool>* given = nullptr) const {
     if (given) given->assign(rows_.size(), false);
     std::vector<Tcl_Obj*> values(rows_.size(), nullptr);
     auto convert = [&](int k, Tcl_Obj* v) {
-      const Option<Stage>& row = rows_[std::size_t(k)];
+      const Option<Draft>& row = rows_[std::size_t(k)];
       if (given) (*given)[std::size_t(k)] = true;
-      if (row.parse) return row.parse(interp, v, stage);
+      if (row.parse) return row.parse(interp, v, draft);
       OptionValue value;
       if (!convertOption(interp, v, info(k), value)) return false;
-      row.set(stage, value);
+      row.set(draft, value);
       return true;
     };
     if (!parseOptions(interp, objc, objv, first, specs(), [&](int k, Tcl_Obj* v) {
@@ -149,21 +149,21 @@ class OptionTable {
       }
     return true;
   }
-  Tcl_Obj* get(const Stage& stage, int k) const {
-    const Option<Stage>& row = rows_[std::size_t(k)];
-    return row.show ? row.show(stage) : optionObj(info(k), row.get(stage));
+  Tcl_Obj* get(const Draft& draft, int k) const {
+    const Option<Draft>& row = rows_[std::size_t(k)];
+    return row.show ? row.show(draft) : optionObj(info(k), row.get(draft));
   }
   // configure with no option: -name value ...
-  Tcl_Obj* all(const Stage& stage) const {
+  Tcl_Obj* all(const Draft& draft) const {
     Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
     for (int k = 0; k < size(); ++k) {
       Tcl_ListObjAppendElement(nullptr, list, Tcl_NewStringObj(info(k).name, -1));
-      Tcl_ListObjAppendElement(nullptr, list, get(stage, k));
+      Tcl_ListObjAppendElement(nullptr, list, get(draft, k));
     }
     return list;
   }
   // `NOUN options`: one dict per row, the defaults read from `defaults`.
-  Tcl_Obj* describe(const Stage& defaults) const {
+  Tcl_Obj* describe(const Draft& defaults) const {
     Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
     for (int k = 0; k < size(); ++k)
       Tcl_ListObjAppendElement(nullptr, list, describeOption(info(k), get(defaults, k)));
@@ -171,7 +171,7 @@ class OptionTable {
   }
   // help's option lines, each with its default.
   std::string help(const char* noun, std::initializer_list<const char*> verbs,
-                   const Stage& defaults) const {
+                   const Draft& defaults) const {
     std::vector<std::string> texts;
     std::vector<OptionSpec> withDefaults;
     texts.reserve(rows_.size());
@@ -190,7 +190,7 @@ class OptionTable {
   }
 
  private:
-  std::vector<Option<Stage>> rows_;
+  std::vector<Option<Draft>> rows_;
   std::vector<OptionSpec> specs_;
   bool inTableOrder_;
 };

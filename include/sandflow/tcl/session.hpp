@@ -35,6 +35,9 @@ struct Session {
   // The last run's stages and scene (sim info passes, sim estimate); a run
   // in an -every script is part of that script's time, not a run of its own.
   sim::RunRecord lastRun;
+  // The lattice's speed in the run going on, so far, or in the last one
+  // (sim info mlups): the command layer's measurement, not the scene's.
+  double mlups = 0.0;
   // While `checkpoint load` starts the checkpoint's recordings again: its
   // step, from which a CSV series continues its file (else -1).
   long long resumeStep = -1;
