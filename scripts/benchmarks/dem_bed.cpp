@@ -8,11 +8,26 @@
 //
 //   threads           a list, e.g. 1,2: the settle runs once (with the most
 //                     threads; the step is deterministic, so the state does
-//                     not depend on it), then each count is timed in turn
-//   --reps R          time the phase R times per thread count (each R x
-//                     `timed` steps further on) and report the best; contacts
-//                     per disc and kinetic energy are those of the first
-//                     repetition (step settle + timed, as dem-bed.md defines)
+//                     not depend on it), then each count is timed in turn,
+//                     each from the settled state (kept with saveState): every
+//                     count times the same steps (timing them one after the
+//                     other had the second count time a later, denser stretch
+//                     of a bed still falling: more pairs, more builds)
+//   --reps R          time the phase R times per thread count (each from the
+//                     settled state) and report the best; contacts per disc
+//                     and kinetic energy are those of the first repetition
+//                     (steps settle+1..settle+timed, as dem-bed.md defines)
+//   --reference       time the slow reference step (Assembly::referenceStep:
+//                     the step's sums and integration as they were before
+//                     issue 38) beside the step, in alternate repetitions:
+//                     lines with step=reference
+//   --settled FILE    not the benchmark's timing of the settle: load the
+//                     settled bed from FILE (an assembly's saveState) when it
+//                     exists, else settle and write it there (settle_s=0 and
+//                     no deepest overlap when loaded)
+//   --bonded G        after the settle, bond every pair of elements closer
+//                     than G metres (bondAll; the material's bond stiffness
+//                     and strength): a cemented bed, timed like the loose one
 //   --trace K         print the kinetic energy and more every K steps of the settle
 //   --fine S K        ... and every K steps after step S (to resolve the bed's
 //                     vertical oscillation, tens of ms, without printing all of it)
@@ -50,6 +65,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 #include <random>
 #include <string>
@@ -60,7 +77,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "sandflow/core/byte_stream.hpp"
 #include "sandflow/dem/assembly.hpp"
+#include "sandflow/io/checkpoint.hpp"
 
 using namespace sf;
 using namespace sf::dem;
@@ -231,7 +250,9 @@ int main(int argc, char** argv) {
   bool diag = false;
   std::string beside;      // --beside FILE
   std::string lammpsData;  // --lammps-data FILE
-  double restitution = 0.5, friction = 0.5;
+  double restitution = 0.5, friction = 0.5, bondGap = -1;
+  bool reference = false;
+  std::string settledFile;  // --settled FILE
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--reps") && i + 1 < argc)
       reps = std::max(1, std::atoi(argv[++i]));
@@ -247,6 +268,12 @@ int main(int argc, char** argv) {
       beside = argv[++i];
     else if (!std::strcmp(argv[i], "--lammps-data") && i + 1 < argc)
       lammpsData = argv[++i];
+    else if (!std::strcmp(argv[i], "--reference"))
+      reference = true;
+    else if (!std::strcmp(argv[i], "--settled") && i + 1 < argc)
+      settledFile = argv[++i];
+    else if (!std::strcmp(argv[i], "--bonded") && i + 1 < argc)
+      bondGap = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--diagnose"))
       diag = true;
     else
@@ -327,7 +354,19 @@ int main(int argc, char** argv) {
   const auto s0 = Clock::now();
   double deepest = 0;
   long deepestStep = 0;
-  for (long s = 0; s < settle; ++s) {
+  struct stat settledStat;
+  const bool loadSettled = !settledFile.empty() && stat(settledFile.c_str(), &settledStat) == 0;
+  if (loadSettled) {
+    std::ifstream file(settledFile, std::ios::binary);
+    const std::vector<char> bytes((std::istreambuf_iterator<char>(file)),
+                                  std::istreambuf_iterator<char>());
+    ByteReader in(bytes.data(), bytes.size(), io::kCheckpointVersion);
+    Assembly fresh;
+    fresh.loadState(in);
+    fresh.setThreads(a.threads());
+    a = std::move(fresh);
+  }
+  for (long s = 0; s < (loadSettled ? 0 : settle); ++s) {
     a.step(dt, g);
     if (s % 10 == 0)
       for (const Contact& c : a.contacts())
@@ -347,6 +386,12 @@ int main(int argc, char** argv) {
     }
   }
   const double settleSeconds = since(s0);
+  if (!settledFile.empty() && !loadSettled) {
+    ByteWriter out;
+    a.saveState(out);
+    std::ofstream(settledFile, std::ios::binary)
+        .write(out.bytes().data(), std::streamsize(out.bytes().size()));
+  }
   if (diag) diagnose(a, walls);
   if (!lammpsData.empty()) {
     if (!writeLammpsData(a, walls, W, H, lammpsData)) {
@@ -356,13 +401,27 @@ int main(int argc, char** argv) {
     if (!beside.empty()) pinToFirstCpu();
   }
 
-  bool first = true;
+  const int bonds = bondGap >= 0 ? a.bondAll({}, bondGap) : 0;
+  // Every timed phase starts from here.
+  ByteWriter settled;
+  a.saveState(settled);
+  auto restore = [&](int threads) {
+    Assembly fresh;
+    ByteReader in(settled.bytes().data(), settled.bytes().size(), io::kCheckpointVersion);
+    fresh.loadState(in);
+    a = std::move(fresh);
+    a.setThreads(threads);
+  };
+
+  bool first = true, referenceMode = false;
   double contactsFirst = 0, discContactsFirst = 0, kineticFirst = 0, translationalFirst = 0;
   // One timed phase: its wall seconds (steps only); contacts are counted
   // between the steps, untimed, and those of the first phase are kept: each
   // contact once, walls included, and disc-disc contacts alone (what
   // LAMMPS's contact/atom counts).
   auto phase = [&]() {
+    restore(a.threads());
+    a.referenceStep = referenceMode;
     double contacts = 0, discContacts = 0, seconds = 0;
     for (long s = 0; s < timed; ++s) {
       const auto t0 = Clock::now();
@@ -399,48 +458,58 @@ int main(int argc, char** argv) {
     // over by the end of this one's repetitions: the stamped phases first.
     const bool besideHere = !beside.empty() && threads == 1;
     if (besideHere && !lammpsData.empty()) besidePhases();
-    double best = 1e300, worst = 0, bestSort = 0, bestNarrow = 0, bestIntegrate = 0, bestPass = 0,
-           bestSums = 0;
-    double bestOther = 0, otherTotal = 0, timedTotal = 0;
-    long builds = 0;
-    for (int r = 0; r < reps; ++r) {
-      const Profile before = a.profile();
-      const long long builds0 = a.broadPhaseBuilds();
-      const double busy0 = machineBusy(), own0 = ownCpu();
-      const double seconds = phase();
-      const double other = std::max(0.0, (machineBusy() - busy0) - (ownCpu() - own0));
-      otherTotal += other, timedTotal += seconds;
-      const Profile& after = a.profile();
-      auto per = [&](Stage stage) {
-        return (after.seconds(stage) - before.seconds(stage)) / timed;
-      };
-      worst = std::max(worst, seconds);
-      if (seconds < best) {
-        best = seconds, bestOther = other;
-        bestSort = per(Stage::demPairs);
-        bestPass = per(Stage::demContacts);
-        bestSums = per(Stage::demSums);
-        bestNarrow = bestPass + bestSums;  // all of the force evaluation
-        bestIntegrate = per(Stage::demIntegrate);
-        builds = long(a.broadPhaseBuilds() - builds0);
+    // The step, and with --reference the slow reference step beside it, in
+    // alternate repetitions (both meet the same machine).
+    struct Best {
+      double best = 1e300, worst = 0, sort = 0, pass = 0, sums = 0, integrate = 0, other = 0;
+      double otherTotal = 0, timedTotal = 0;
+      long builds = 0;
+    };
+    const std::vector<bool> modes =
+        reference ? std::vector<bool>{false, true} : std::vector<bool>{false};
+    Best results[2];
+    for (int r = 0; r < reps; ++r)
+      for (bool ref : modes) {
+        Best& res = results[ref];
+        referenceMode = ref;
+        const double busy0 = machineBusy(), own0 = ownCpu();
+        const double seconds = phase();
+        const double other = std::max(0.0, (machineBusy() - busy0) - (ownCpu() - own0));
+        res.otherTotal += other, res.timedTotal += seconds;
+        const Profile& after = a.profile();  // a fresh one since the restore
+        auto per = [&](Stage stage) { return after.seconds(stage) / timed; };
+        res.worst = std::max(res.worst, seconds);
+        if (seconds < res.best) {
+          res.best = seconds, res.other = other;
+          res.sort = per(Stage::demPairs);
+          res.pass = per(Stage::demContacts);
+          res.sums = per(Stage::demSums);
+          res.integrate = per(Stage::demIntegrate);
+          res.builds = long(a.broadPhaseBuilds());  // since the restore
+        }
       }
-    }
+    referenceMode = false;
     if (besideHere && lammpsData.empty()) besidePhases();
     double narrowOnly = 1e300;
     for (int r = 0; r < 50; ++r) narrowOnly = std::min(narrowOnly, narrowPass(a, threads));
-    narrowOnly = std::min(narrowOnly, bestNarrow);
-    std::printf(
-        "N=%d threads=%d dt=%.3g settle_s=%.1f timed_s=%.3f reps=%d psps=%.4g psps_min=%.4g "
-        "contacts_per_disc=%.3f disc_contacts_per_disc=%.3f kinetic=%.3g translational=%.3g "
-        "sort_us=%.1f narrow_us=%.1f forces_us=%.1f pass_us=%.1f sums_us=%.1f integrate_us=%.1f "
-        "step_us=%.1f "
-        "builds=%ld pairs_per_disc=%.3f deepest_overlap=%.3f deepest_step=%ld other_cpu_s=%.2f "
-        "other_cpu_all_s=%.2f timed_all_s=%.2f\n",
-        n, threads, dt, settleSeconds, best, reps, n * double(timed) / best,
-        n * double(timed) / worst, contactsFirst, discContactsFirst, kineticFirst,
-        translationalFirst, bestSort * 1e6, narrowOnly * 1e6, (bestNarrow - narrowOnly) * 1e6,
-        bestPass * 1e6, bestSums * 1e6, bestIntegrate * 1e6, best / timed * 1e6, builds,
-        double(a.contacts().size()) / n, deepest, deepestStep, bestOther, otherTotal, timedTotal);
+    for (bool ref : modes) {
+      const Best& res = results[ref];
+      const double narrow = std::min(narrowOnly, res.pass + res.sums);
+      std::printf(
+          "N=%d%s%s threads=%d dt=%.3g settle_s=%.1f timed_s=%.3f reps=%d psps=%.4g psps_min=%.4g "
+          "contacts_per_disc=%.3f disc_contacts_per_disc=%.3f kinetic=%.3g translational=%.3g "
+          "sort_us=%.1f narrow_us=%.1f forces_us=%.1f pass_us=%.1f sums_us=%.1f "
+          "integrate_us=%.1f step_us=%.1f "
+          "builds=%ld pairs_per_disc=%.3f deepest_overlap=%.3f deepest_step=%ld other_cpu_s=%.2f "
+          "other_cpu_all_s=%.2f timed_all_s=%.2f\n",
+          n, bondGap >= 0 ? (" bonds=" + std::to_string(bonds)).c_str() : "",
+          ref ? " step=reference" : "", threads, dt, settleSeconds, res.best, reps,
+          n * double(timed) / res.best, n * double(timed) / res.worst, contactsFirst,
+          discContactsFirst, kineticFirst, translationalFirst, res.sort * 1e6, narrow * 1e6,
+          (res.pass + res.sums - narrow) * 1e6, res.pass * 1e6, res.sums * 1e6, res.integrate * 1e6,
+          res.best / timed * 1e6, res.builds, double(a.contacts().size()) / n, deepest, deepestStep,
+          res.other, res.otherTotal, res.timedTotal);
+    }
     std::fflush(stdout);
   }
   return 0;

@@ -374,8 +374,8 @@ void Assembly::step(double dt, const Vec2& gravity) {
     if (referenceStep) {
       checkSpeeds(dt, nullptr);
     } else {
-      const detail::SpeedInputs in{b.invMass.data(), b.invInertia.data(),  b.reach.data(),
-                                   b.extent.data(),  scratchTouch_.data(), suspect_.data()};
+      const detail::SpeedInputs in{b.reach.data(), b.extent.data(), scratchTouch_.data(),
+                                   suspect_.data()};
       if (detail::accelerate(motion(), in, n, dt, threads())) checkSpeeds(dt, suspect_.data());
     }
   } catch (...) {

@@ -119,8 +119,7 @@ SF_KERNEL_CLONES bool sieveRange(const Motion& m, const SpeedInputs& in, int beg
   const double* __restrict inertia = m.inertia;
   double* __restrict acc = m.acc[0].data();
   double* __restrict alpha = m.alpha;
-  const double* __restrict invMass = in.invMass;
-  const double* __restrict invInertia = in.invInertia;
+  const std::uint8_t* __restrict hold = m.hold;
   const double* __restrict reach = in.reach;
   const double* __restrict extent = in.extent;
   const char* __restrict touching = in.touching;
@@ -145,7 +144,8 @@ SF_KERNEL_CLONES bool sieveRange(const Motion& m, const SpeedInputs& in, int beg
                          ((x[2 * s + 1] + dt * vfy) - (x[2 * s + 1] + dt * vfy)) +
                          ((angle[s] + dt * wf) - (angle[s] + dt * wf));
     const bool finite = probe == 0;
-    const bool fixed = invMass[s] == 0 && invInertia[s] == 0;
+    // Fully held: invMass and invInertia 0 (Assembly::updateMass), one byte to read.
+    const bool fixed = (hold[s] & (holdX | holdY | holdRotation)) == (holdX | holdY | holdRotation);
     const bool ok = fixed || (touching[s] ? slowEnough : finite);
     suspect[s] = !ok;
     any |= !ok;

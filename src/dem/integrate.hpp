@@ -26,7 +26,7 @@ struct Motion {
 
 // What the speed checks read besides the motion (Assembly::checkSpeeds).
 struct SpeedInputs {
-  const double *invMass, *invInertia, *reach, *extent;
+  const double *reach, *extent;
   const char* touching;  // in contact this step
   char* suspect;         // out: 1 where the exact check must look
 };
