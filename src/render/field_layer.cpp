@@ -182,6 +182,33 @@ void sampleGrid(const lb::Lattice& lattice, const detail::FieldGrid& grid, Field
     }
 }
 
+// sampleGrid for the fields of a node's moments: value(rho, u) at fluid
+// nodes, a row's texels at a time (Lattice::rowFields at the grid's columns).
+template <class Value>
+void sampleMoments(const lb::Lattice& lattice, const detail::FieldGrid& grid, FieldValues& f,
+                   const Value& value) {
+  f.nx = grid.width();
+  f.ny = grid.height();
+  f.value.resize(std::size_t(f.nx) * f.ny);
+  f.fluid.resize(f.value.size());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+#pragma omp parallel
+  {
+    std::vector<double> rho(std::size_t(f.nx));
+    std::vector<Vec2> u(std::size_t(f.nx));
+#pragma omp for schedule(dynamic, 8)
+    for (int b = 0; b < f.ny; ++b) {
+      const int j = grid.row[std::size_t(b)];
+      lattice.rowFields(j, grid.col.data(), f.nx, rho.data(), u.data());
+      for (int a = 0; a < f.nx; ++a) {
+        const std::size_t k = std::size_t(b) * f.nx + a;
+        f.fluid[k] = holdsFluid(lattice.kind(grid.col[std::size_t(a)], j));
+        f.value[k] = f.fluid[k] ? value(rho[std::size_t(a)], u[std::size_t(a)]) : nan;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 FieldValues sampleField(const lb::Lattice& lattice, Field field,
@@ -233,18 +260,13 @@ FieldValues sampleField(const lb::Lattice& lattice, const std::vector<float>& ep
       });
       break;
     case Field::density:
-      sampleGrid(lattice, grid, f,
-                 [&](int i, int j, bool fluid) { return fluid ? lattice.density(i, j) : nan; });
+      sampleMoments(lattice, grid, f, [](double rho, const Vec2&) { return rho; });
       break;
     case Field::pressure:  // as Lattice::pressure, less the reference
-      sampleGrid(lattice, grid, f, [&](int i, int j, bool fluid) {
-        return fluid ? cs2 * lattice.density(i, j) - p0 : nan;
-      });
+      sampleMoments(lattice, grid, f, [&](double rho, const Vec2&) { return cs2 * rho - p0; });
       break;
     case Field::velocity:
-      sampleGrid(lattice, grid, f, [&](int i, int j, bool fluid) {
-        return fluid ? lattice.velocity(i, j).norm() : nan;
-      });
+      sampleMoments(lattice, grid, f, [](double, const Vec2& u) { return u.norm(); });
       break;
     default: {  // vorticity: the velocities of the nodes in view and their neighbours, once each
       const auto [i0, i1] = nodeSpan(grid.col);

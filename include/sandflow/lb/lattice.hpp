@@ -135,6 +135,8 @@ class Lattice {
   // Density and velocity of the nx nodes of row j, exactly as density() and
   // velocity() give them, in one pass (pictures of large lattices).
   void rowFields(int j, double* rho, Vec2* u) const;
+  // The same at the n nodes (columns[k], j) only (a view's pixels).
+  void rowFields(int j, const int* columns, int n, double* rho, Vec2* u) const;
   // Nearest node to a point, or nullopt outside the lattice.
   std::optional<std::pair<int, int>> nodeAt(const Vec2& x) const;
 
