@@ -162,7 +162,10 @@ const OptionTable<LatticeDraft> kOptions{
          [](const LatticeDraft& s) { return realValue(s.def.magic); },
          [](LatticeDraft& s, const OptionValue& v) { s.def.magic = v.real; }}},
     true};
-enum { kSize = 1, kCells, kSpacing, kViscosity, kDensity, kTau };
+// The rows whose presence the commands read (the table's own order aside).
+const int kSize = kOptions.index("-size"), kCells = kOptions.index("-cells"),
+          kSpacing = kOptions.index("-spacing"), kViscosity = kOptions.index("-viscosity"),
+          kTau = kOptions.index("-tau");
 
 // A new lattice's settings, for help's and `lattice options`' defaults.
 const LatticeDraft& defaults() {

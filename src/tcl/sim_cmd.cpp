@@ -148,20 +148,11 @@ const OptionTable<SimDraft> kOptions{
         [](const SimDraft& s) { return choiceValue(s.accuracy); },
         [](SimDraft& s, const OptionValue& v) { s.accuracy = v.choice; }},
 };
-enum {
-  kTimestep = 0,
-  kThreads,
-  kGravity,
-  kIntegrator,
-  kMaxOverlap,
-  kSolidRatio,
-  kSubsteps,
-  kBuoyancy,
-  kShare,
-  kInterior,
-  kCoupling,
-  kAccuracy
-};
+// The rows whose presence the commands read (the table's own order aside).
+const int kTimestep = kOptions.index("-timestep"), kThreads = kOptions.index("-threads"),
+          kGravity = kOptions.index("-gravity"), kIntegrator = kOptions.index("-integrator"),
+          kSolidRatio = kOptions.index("-solidratio"), kSubsteps = kOptions.index("-substeps"),
+          kCoupling = kOptions.index("-coupling"), kAccuracy = kOptions.index("-accuracy");
 
 // The preset's step settings onto the draft, except those given with it.
 void draftPreset(SimDraft& draft, std::vector<bool>& given) {

@@ -8,8 +8,10 @@
 #include <initializer_list>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "sandflow/core/assert.hpp"
 #include "sandflow/tcl/args.hpp"
 
 namespace sf::tcl {
@@ -116,6 +118,15 @@ class OptionTable {
     specs_.push_back({nullptr, nullptr, nullptr});
   }
   int size() const { return int(rows_.size()); }
+  // The row of option `name` ("-timestep"), for reading `given` by name
+  // rather than by a count of rows kept in step by hand. A name no row has
+  // is a bug in sandflow.
+  int index(std::string_view name) const {
+    for (int k = 0; k < size(); ++k)
+      if (name == info(k).name) return k;
+    SF_ASSERT(!"an option table has no row of that name");
+    return -1;
+  }
   const OptionInfo& info(int k) const { return rows_[std::size_t(k)].info; }
   // The plain rows, for parseOptions, optionIndex and helpText.
   const OptionSpec* specs() const { return specs_.data(); }
