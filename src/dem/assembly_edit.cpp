@@ -11,16 +11,20 @@ void Assembly::configure(int id, const ElementEdit& e) {
   Bodies& b = bodies_;
   const ShapeType type = b.shape[s]->type();
   const ShapeParts parts = partsOf(type);
-  if (e.radius && !parts.radius) throw Error("VALUE RADIUS", "a radius applies to discs only");
+  const EditPart ends = e.from ? EditPart::from : EditPart::to;
+  if (e.radius && !parts.radius)
+    throw EditRefused(EditPart::radius, "VALUE RADIUS", "a radius applies to discs only");
   if (e.radius && !(*e.radius > 0 && std::isfinite(*e.radius)))
-    throw Error("VALUE RADIUS", "a disc's radius must be > 0, got " + formatNumber(*e.radius));
+    throw EditRefused(EditPart::radius, "VALUE RADIUS",
+                      "a disc's radius must be > 0, got " + formatNumber(*e.radius));
   if (e.stress && !parts.stress)
-    throw Error("VALUE STRESS", "a servo stress applies to walls only");
+    throw EditRefused(EditPart::stress, "VALUE STRESS", "a servo stress applies to walls only");
   if (e.stress && std::isinf(*e.stress))
-    throw Error("VALUE STRESS", "a servo stress must be finite");
-  if ((e.from || e.to) && !parts.ends) throw Error("VALUE WALL", "ends apply to walls only");
+    throw EditRefused(EditPart::stress, "VALUE STRESS", "a servo stress must be finite");
+  if ((e.from || e.to) && !parts.ends)
+    throw EditRefused(ends, "VALUE WALL", "ends apply to walls only");
   if ((e.from || e.to) && (e.center || e.angle))
-    throw Error("VALUE WALL", "give a wall its ends or its centre and angle, not both");
+    throw EditRefused(ends, "VALUE WALL", "give a wall its ends or its centre and angle, not both");
   if (e.material && (*e.material < 0 || *e.material >= materials_.size()))
     throw Error("LOOKUP MATERIAL", "no material " + std::to_string(*e.material));
   // The new shape, if any, and its pose.
@@ -32,13 +36,19 @@ void Assembly::configure(int id, const ElementEdit& e) {
     const auto [p0, q0] = w.ends(b.x[s], b.angle[s]);
     const Vec2 p = e.from.value_or(p0), q = e.to.value_or(q0);
     if (!((q - p).norm() > 0))
-      throw Error("VALUE WALL", "wall has zero length: its two ends are the same point");
+      throw EditRefused(ends, "VALUE WALL",
+                        "wall has zero length: its two ends are the same point");
     shape = std::make_unique<Wall>((q - p).norm(), w.thickness());
     center = 0.5 * (p + q);
     angle = std::atan2((q - p).y(), (q - p).x());
   }
   if (e.radius) shape = std::make_unique<Disc>(*e.radius);
-  checkMass(shape ? *shape : *b.shape[s], materials_[e.material.value_or(b.material[s])]);
+  try {
+    checkMass(shape ? *shape : *b.shape[s], materials_[e.material.value_or(b.material[s])]);
+  } catch (const Error& error) {  // a new radius or material gives the mass
+    if (!e.radius && !e.material) throw;
+    throw EditRefused(e.radius ? EditPart::radius : EditPart::material, error.code(), error.what());
+  }
   // Everything is checked: apply.
   b.x[s] = center;
   b.angle[s] = angle;

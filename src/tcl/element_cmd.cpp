@@ -21,14 +21,20 @@ bool getElement(Tcl_Interp* interp, Tcl_Obj* obj, const dem::Assembly& a, int& s
   return true;
 }
 
-// The option of an edit that the kernel's refusal is about, for errorInfo:
-// the kernel names the field, the option is this layer's word.
-const char* optionOf(const std::string& code, const dem::ElementEdit& e) {
-  if (code == "VALUE RADIUS") return "-radius";
-  if (code == "VALUE STRESS") return "-stress";
-  if (code == "VALUE WALL") return e.from ? "-from" : "-to";
-  if (code == "VALUE MASS") return e.radius ? "-radius" : e.material ? "-material" : nullptr;
-  return nullptr;
+// The option of the part of an edit that the kernel refused, for errorInfo.
+const char* optionOf(dem::EditPart part) {
+  switch (part) {
+    case dem::EditPart::from:
+      return "-from";
+    case dem::EditPart::to:
+      return "-to";
+    case dem::EditPart::radius:
+      return "-radius";
+    case dem::EditPart::material:
+      return "-material";
+    default:
+      return "-stress";
+  }
 }
 
 int ElementConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
@@ -67,9 +73,12 @@ int ElementConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
   edit.stress = e.stress;
   try {
     a.configure(a.bodies().id[slot], edit);
+  } catch (const dem::EditRefused& refused) {
+    fail(interp, refused);
+    noteOptionOnce(interp, optionOf(refused.part()));
+    return TCL_ERROR;
   } catch (const Error& error) {
     fail(interp, error);
-    if (const char* option = optionOf(error.code(), edit)) noteOptionOnce(interp, option);
     return TCL_ERROR;
   }
   return TCL_OK;

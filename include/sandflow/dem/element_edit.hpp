@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "sandflow/core/error.hpp"
 #include "sandflow/dem/shape.hpp"
 #include "sandflow/geometry/vec2.hpp"
 
@@ -34,5 +35,18 @@ constexpr ShapeParts partsOf(ShapeType type) {
           .ends = type == ShapeType::wall,
           .stress = type == ShapeType::wall};
 }
+
+// The part of an edit a refusal is about, so that a front end can name its
+// own word for it (the command layer: the option) without reading the code.
+enum class EditPart : std::uint8_t { from, to, radius, material, stress };
+class EditRefused : public Error {
+ public:
+  EditRefused(EditPart part, std::string code, const std::string& message)
+      : Error(std::move(code), message), part_(part) {}
+  EditPart part() const { return part_; }
+
+ private:
+  EditPart part_;
+};
 
 }  // namespace sf::dem
