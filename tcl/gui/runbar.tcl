@@ -13,9 +13,9 @@ namespace eval ::sf::gui::runbar {
     variable run -1            ;# the run the tick last served
     variable pause 0           ;# Pause pressed: the tick breaks the run
     variable nextFrame 0       ;# clock milliseconds when the next redraw is due
-    variable budget 0.08       ;# the view's own share of a run's time: its frames sample the
+    variable budget 0.09       ;# the view's own share of a run's time: its frames sample the
                                ;# view's pixels, not the lattice, and hardly slow the steps after
-                               ;# them; the tick's other work comes on top (10% in all)
+                               ;# them; the tick's other work (under 1%) comes on top
     variable longest 1000.0    ;# milliseconds: frames are never further apart, whatever they cost
     variable frameCost {}      ;# milliseconds each redraw took (the last 50)
     variable progress 0
@@ -46,7 +46,7 @@ proc ::sf::gui::runbar::create {f} {
     ::sf::gui::tip $f.pause "Pause a run, whoever started it (Esc / F6)"
     ::sf::gui::tip $f.step "One step (F7)"
     ::sf::gui::tip $f.reset "Empty the scene: reset"
-    ::sf::gui::tip $f.fps "How often the view redraws while a run goes on (frames are spaced out where drawing would take more than 8% of the run, but come at least once a second)"
+    ::sf::gui::tip $f.fps "How often the view redraws while a run goes on (frames are spaced out where drawing would take more than 9% of the run, but come at least once a second)"
     ::sf::gui::tip $f.spf "Redraw every this many steps instead (0: by the frame rate)"
     $f.pause state disabled
     ::sf::gui::runtick ::sf::gui::runbar::tick 50
@@ -162,7 +162,9 @@ proc ::sf::gui::runbar::tick {} {
         set cost [expr {($end - $t0) / 1000.0}]
         set frameCost [lrange [lappend frameCost $cost] end-49 end]
         set recent [lsort -real [lrange $frameCost end-4 end]]
-        set typical [lindex $recent [expr {[llength $recent] / 2}]]
+        # (The lower median: a run's first, cold frame alone does not space
+        # out the second.)
+        set typical [lindex $recent [expr {([llength $recent] - 1) / 2}]]
         # A frame rate being typed (not a number yet) counts as the default.
         set rate [expr {[string is double -strict $fps] ? max(1, min(60, $fps)) : 20}]
         set period [expr {min($longest,
