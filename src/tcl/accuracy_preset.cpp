@@ -24,8 +24,9 @@ const AccuracyPreset& accuracyPreset(int which) {
 int matchingAccuracy(const sim::Manager& m) {
   for (int k = 0; k < kCustomAccuracy; ++k) {
     const AccuracyPreset& p = kPresets[k];
-    if (m.couplingSettings().subcells != p.subcells || m.couplingSettings().implicit != p.implicit ||
-        m.assembly().integrator != p.integrator || m.substeps() != p.substeps)
+    if (m.couplingSettings().subcells != p.subcells ||
+        m.couplingSettings().implicit != p.implicit || m.assembly().integrator != p.integrator ||
+        m.substeps() != p.substeps)
       continue;
     if (m.hasLattice()) {
       const lb::ResolvedLattice& l = m.lattice().params();
