@@ -4,6 +4,7 @@
 #include <cstring>
 #include <limits>
 #include <sstream>
+#include <string_view>
 
 #include "remedy.hpp"
 
@@ -189,6 +190,16 @@ std::string helpText(const char* noun, std::initializer_list<const char*> verbs,
   }
   if (!text.empty()) text.pop_back();
   return text;
+}
+
+bool answerHelp(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], const char* noun,
+                std::initializer_list<const char*> forms, const OptionSpec* options) {
+  if (objc != 2 || std::string_view(Tcl_GetString(objv[1])) != "help") return false;
+  std::string text;
+  for (const char* f : forms) text += std::string(noun) + " " + f + "\n";
+  text += std::string(noun) + " help\n";
+  Tcl_SetObjResult(interp, newString(text + helpText(noun, {}, options)));
+  return true;
 }
 
 void makeEnsemble(Tcl_Interp* interp, const char* qualifiedName, std::initializer_list<Verb> verbs,

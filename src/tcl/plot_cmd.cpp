@@ -317,6 +317,9 @@ int checkLogAxes(Tcl_Interp* interp, const PlotOptions& o) {
 }
 
 int Plot(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (answerHelp(interp, objc, objv, "plot", {"OUT.png CSVFILE ?-option value ...?   -> OUT.png"},
+                 kPlotOptions))
+    return TCL_OK;
   if (objc < 3) {
     Tcl_WrongNumArgs(interp, 1, objv, "OUT.png CSVFILE ?-option value ...?");
     return TCL_ERROR;

@@ -115,6 +115,9 @@ const OptionSpec kRecordOptions[] = {
     {nullptr, nullptr, nullptr}};
 
 int Record(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (answerHelp(interp, objc, objv, "record", {"FILE ?-every K? ?-quantities LIST?   -> FILE"},
+                 kRecordOptions))
+    return TCL_OK;
   if (objc < 2) {
     Tcl_WrongNumArgs(interp, 1, objv, "FILE ?-every K? ?-quantities LIST?");
     return TCL_ERROR;

@@ -164,6 +164,7 @@ int everyK(Session& s, const RunRequest& r) {
 }
 
 int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (answerHelp(interp, objc, objv, "run", {"?N? ?-every K script?"}, kRunOptions)) return TCL_OK;
   Session& s = sessionOf(data);
   if (refuseWhileRunning(s) != TCL_OK) return TCL_ERROR;
   RunRequest r;

@@ -68,6 +68,10 @@ void dictPut(Tcl_Obj* dict, const char* key, Tcl_Obj* value);
 // "help" text for an ensemble: its verbs and options.
 std::string helpText(const char* noun, std::initializer_list<const char*> verbs,
                      const OptionSpec* options);
+// `NOUN help` of a command that is not an ensemble (record, plot, run): true,
+// with the help text as the result, when objv is exactly {NOUN help}.
+bool answerHelp(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], const char* noun,
+                std::initializer_list<const char*> forms, const OptionSpec* options);
 
 // Creates the ensemble ::sf::NOUN whose verbs are the given commands.
 struct Verb {
