@@ -146,6 +146,14 @@ void gridAxis(double origin, double h, int n, double w0, double p0, double scale
   }
 }
 
+// A texel of `f` per point of the grid.
+void sizeFor(const detail::FieldGrid& grid, FieldValues& f) {
+  f.nx = grid.width();
+  f.ny = grid.height();
+  f.value.resize(std::size_t(f.nx) * f.ny);
+  f.fluid.resize(f.value.size());
+}
+
 // Sizes `f` to the grid and fills it: value(i, j, fluid) at each texel's
 // node (NaN where the field has none). Texels on the node of the one before
 // them (pixels smaller than nodes) take its value: each node is read once.
@@ -154,10 +162,7 @@ void gridAxis(double origin, double h, int n, double w0, double p0, double scale
 template <class Value>
 void sampleGrid(const lb::Lattice& lattice, const detail::FieldGrid& grid, FieldValues& f,
                 const Value& value) {
-  f.nx = grid.width();
-  f.ny = grid.height();
-  f.value.resize(std::size_t(f.nx) * f.ny);
-  f.fluid.resize(f.value.size());
+  sizeFor(grid, f);
 #pragma omp parallel for schedule(dynamic, 8)
   for (int b = 0; b < f.ny; ++b) {
     const int j = grid.row[std::size_t(b)];
@@ -187,10 +192,7 @@ void sampleGrid(const lb::Lattice& lattice, const detail::FieldGrid& grid, Field
 template <class Value>
 void sampleMoments(const lb::Lattice& lattice, const detail::FieldGrid& grid, FieldValues& f,
                    const Value& value) {
-  f.nx = grid.width();
-  f.ny = grid.height();
-  f.value.resize(std::size_t(f.nx) * f.ny);
-  f.fluid.resize(f.value.size());
+  sizeFor(grid, f);
   const double nan = std::numeric_limits<double>::quiet_NaN();
 #pragma omp parallel
   {
