@@ -19,8 +19,7 @@ struct BondDraft {
 using Row = Option<BondDraft>;
 Row bondRow(OptionInfo info, double BondDraft::*field) {
   info.range = {.min = 0};
-  return Row{info, [field](const BondDraft& s) { return realValue(s.*field); },
-             [field](BondDraft& s, const OptionValue& v) { s.*field = v.real; }};
+  return memberRow(info, field);
 }
 const OptionTable<BondDraft> kCreateOptions{
     bondRow({"-stiffness",

@@ -229,6 +229,25 @@ int Region(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[])
   return TCL_OK;
 }
 
+// A hook of `run` as its getter shows it: {script number}.
+Tcl_Obj* hookObj(Tcl_Obj* script, Tcl_Obj* number) {
+  Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
+  Tcl_ListObjAppendElement(nullptr, list, script ? script : Tcl_NewObj());
+  Tcl_ListObjAppendElement(nullptr, list, number);
+  return list;
+}
+
+// Replaces a hook's script with a copy of `script`; an empty one removes it.
+void replaceHook(Tcl_Obj*& hook, Tcl_Obj* script) {
+  if (hook) Tcl_DecrRefCount(hook);
+  hook = nullptr;
+  int length = 0;
+  Tcl_GetStringFromObj(script, &length);
+  if (length == 0) return;
+  hook = Tcl_DuplicateObj(script);
+  Tcl_IncrRefCount(hook);
+}
+
 // ::sf::gui::runtick ?script ?ms?? : the script `run` evaluates at most every
 // ms milliseconds (default 50); an empty script removes it. With no
 // arguments: the current {script ms}.
@@ -239,10 +258,7 @@ int RunTick(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
     return TCL_ERROR;
   }
   if (objc == 1) {
-    Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
-    Tcl_ListObjAppendElement(nullptr, list, s.runTick ? s.runTick : Tcl_NewObj());
-    Tcl_ListObjAppendElement(nullptr, list, Tcl_NewIntObj(s.runTickMs));
-    Tcl_SetObjResult(interp, list);
+    Tcl_SetObjResult(interp, hookObj(s.runTick, Tcl_NewIntObj(s.runTickMs)));
     return TCL_OK;
   }
   int ms = s.runTickMs;
@@ -252,14 +268,7 @@ int RunTick(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
       return fail(interp, "VALUE TICK",
                   "the tick interval must be 1 to 10000 ms, got " + std::to_string(ms));
   }
-  int length = 0;
-  Tcl_GetStringFromObj(objv[1], &length);
-  if (s.runTick) Tcl_DecrRefCount(s.runTick);
-  s.runTick = nullptr;
-  if (length > 0) {
-    s.runTick = Tcl_DuplicateObj(objv[1]);
-    Tcl_IncrRefCount(s.runTick);
-  }
+  replaceHook(s.runTick, objv[1]);
   s.runTickMs = ms;
   return TCL_OK;
 }
@@ -275,10 +284,7 @@ int RunSample(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
     return TCL_ERROR;
   }
   if (objc == 1) {
-    Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
-    Tcl_ListObjAppendElement(nullptr, list, s.runSample ? s.runSample : Tcl_NewObj());
-    Tcl_ListObjAppendElement(nullptr, list, Tcl_NewWideIntObj(s.runSampleEvery));
-    Tcl_SetObjResult(interp, list);
+    Tcl_SetObjResult(interp, hookObj(s.runSample, Tcl_NewWideIntObj(s.runSampleEvery)));
     return TCL_OK;
   }
   Tcl_WideInt every = s.runSampleEvery;
@@ -287,14 +293,7 @@ int RunSample(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
     if (every < 0)
       return fail(interp, "VALUE EVERY", "K must be >= 0, got " + std::to_string(every));
   }
-  int length = 0;
-  Tcl_GetStringFromObj(objv[1], &length);
-  if (s.runSample) Tcl_DecrRefCount(s.runSample);
-  s.runSample = nullptr;
-  if (length > 0) {
-    s.runSample = Tcl_DuplicateObj(objv[1]);
-    Tcl_IncrRefCount(s.runSample);
-  }
+  replaceHook(s.runSample, objv[1]);
   s.runSampleEvery = every;
   return TCL_OK;
 }

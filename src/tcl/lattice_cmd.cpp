@@ -356,21 +356,17 @@ Option<Obstacle> idRow() {
 }
 
 const OptionTable<lb::RectObstacle> kRectOptions{
-    {.info = {.name = "-slip",
-              .synopsis = "0|1",
-              .help = "specular (free-slip) walls instead of no-slip",
-              .kind = ValueKind::boolean},
-     .get = [](const lb::RectObstacle& r) { return booleanValue(r.slip); },
-     .set = [](lb::RectObstacle& r, const OptionValue& v) { r.slip = v.boolean; }},
+    memberRow({.name = "-slip",
+               .synopsis = "0|1",
+               .help = "specular (free-slip) walls instead of no-slip"},
+              &lb::RectObstacle::slip),
     idRow<lb::RectObstacle>()};
 
 const OptionTable<lb::CircleObstacle> kCircleOptions{
-    {.info = {.name = "-outside",
-              .synopsis = "0|1",
-              .help = "solid outside the circle instead of inside: a container",
-              .kind = ValueKind::boolean},
-     .get = [](const lb::CircleObstacle& c) { return booleanValue(c.outside); },
-     .set = [](lb::CircleObstacle& c, const OptionValue& v) { c.outside = v.boolean; }},
+    memberRow({.name = "-outside",
+               .synopsis = "0|1",
+               .help = "solid outside the circle instead of inside: a container"},
+              &lb::CircleObstacle::outside),
     {.info = {.name = "-velocity",
               .synopsis = "{vx vy w}",
               .help = "translation and rotation rate of the wall",

@@ -23,8 +23,7 @@ constexpr Range kNonNegative{.min = 0};
 
 // A plain real field of the material.
 Row realRow(OptionInfo info, double Material::*field) {
-  return Row{info, [field](const Material& m) { return realValue(m.*field); },
-             [field](Material& m, const OptionValue& v) { m.*field = v.real; }};
+  return memberRow(info, field);
 }
 
 const OptionTable<Material> kOptions{

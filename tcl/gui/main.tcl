@@ -242,11 +242,11 @@ proc ::sf::gui::scrollFit {path} {
     set inner $path.c.in
     $path.c configure -width [winfo reqwidth $inner] -scrollregion [list 0 0 0 [winfo reqheight $inner]]
     # The wheel scrolls it over any of its parts, those made since too.
-    set todo [list $inner]
-    while {[llength $todo]} {
-        set todo [lassign $todo w]
+    set pending [list $inner]
+    while {[llength $pending]} {
+        set pending [lassign $pending w]
         if {"ScrollPane$path" ni [bindtags $w]} { bindtags $w [linsert [bindtags $w] end ScrollPane$path] }
-        lappend todo {*}[winfo children $w]
+        lappend pending {*}[winfo children $w]
     }
 }
 

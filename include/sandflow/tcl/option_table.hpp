@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "sandflow/core/assert.hpp"
@@ -104,6 +105,28 @@ struct Option {
   std::function<bool(Tcl_Interp*, Tcl_Obj*, Draft&)> parse = nullptr;
   std::function<Tcl_Obj*(const Draft&)> show = nullptr;
 };
+
+// A row over a plain member of the draft: a real (double) or a boolean.
+template <class Draft, class Value>
+Option<Draft> memberRow(OptionInfo info, Value Draft::*member) {
+  static_assert(std::is_same_v<Value, double> || std::is_same_v<Value, bool>);
+  if constexpr (std::is_same_v<Value, bool>) info.kind = ValueKind::boolean;
+  return {.info = info,
+          .get =
+              [member](const Draft& d) {
+                if constexpr (std::is_same_v<Value, bool>)
+                  return booleanValue(d.*member);
+                else
+                  return realValue(d.*member);
+              },
+          .set =
+              [member](Draft& d, const OptionValue& v) {
+                if constexpr (std::is_same_v<Value, bool>)
+                  d.*member = v.boolean;
+                else
+                  d.*member = v.real;
+              }};
+}
 
 // The rows of one noun. Keep it static: Tcl caches the name table by address.
 template <class Draft>
