@@ -94,10 +94,8 @@ void Lattice::reconfigure(const ResolvedLattice& params, double machLimit) {
       side.pressure += (cs2Next - cs2) * p_.def.density;
   }
   const bool wallsChanged = [&] {
-    for (int s = 0; s < 4; ++s) {
-      const SideDef &a = next.def.sides[s], &b = p_.def.sides[s];
-      if (a.kind != b.kind || a.velocity != b.velocity || a.pressure != b.pressure) return true;
-    }
+    for (int s = 0; s < 4; ++s)
+      if (!sameSide(next.def.sides[s], p_.def.sides[s])) return true;
     return next.dt != p_.dt;  // wall terms are in lattice units
   }();
   const bool stepChanged = next.dt != p_.dt || next.tau != p_.tau ||
@@ -133,10 +131,52 @@ StepContext Lattice::contextFor(const ResolvedLattice& p) const {
   return c;
 }
 
+void Lattice::setTime(double t) {
+  if (t == time_) return;
+  time_ = t;
+  if (sidesVary()) imposeSides(time_ + p_.dt);
+}
+
+void Lattice::setSideValues(int side, std::vector<Vec2> values) {
+  SF_ASSERT(side >= 0 && side < 4);
+  SideDef& d = p_.def.sides[side];
+  if (d.kind != SideKind::velocity || !d.byExpression())
+    throw Error("VALUE WALLS",
+                std::string(sideNames[side]) + " is not a velocity side given by expressions");
+  checkSideValues(p_, side, values);
+  d.values = std::move(values);
+  imposeSides(time_ + p_.dt);
+}
+
+bool Lattice::sidesVary() const {
+  for (const SideDef& d : p_.def.sides)
+    if (d.kind == SideKind::velocity && (d.ramp > 0 || d.timed)) return true;
+  return false;
+}
+
+void Lattice::imposeSides(double t) {
+  const double toLattice = p_.dt / p_.h;
+  for (const auto& k : kinds_) {
+    auto* z = dynamic_cast<ZouHeNode*>(k.get());
+    if (!z || z->pressure) continue;
+    const SideDef& d = p_.def.sides[z->side];
+    z->velocity = d.velocity * toLattice;  // as it always was: uniform sides keep their bits
+    z->velocities.clear();
+    if (d.profile == SideProfile::uniform && !d.byExpression() && d.ramp == 0) continue;
+    const double ramp = rampFactor(t, d.ramp);
+    const bool alongX = z->side == bottom || z->side == top;
+    for (const std::int64_t x : z->nodes) {
+      const int n = int(alongX ? x % rowStride_ - 1 : x / rowStride_ - 1);
+      z->velocities.push_back(sideVelocityAt(p_, z->side, n) * toLattice * ramp);
+    }
+  }
+}
+
 StepStats Lattice::step(double machLimit) {
   Profile& profile = profile_.get();
   if (profile_.owned()) profile.beginStep();
   const auto t0 = Profile::Clock::now();
+  if (sidesVary()) imposeSides(time_ + p_.dt);
   const StepContext ctx = context();
   StepStats stats;
   // The covered cells in the bulk's sweep when they can be, else in a pass
@@ -183,6 +223,8 @@ StepStats Lattice::step(double machLimit) {
   if (spare_) std::swap(f_, spare_);
   layout_ = flipped(layout_);
   fill();
+  timeBefore_ = time_;
+  time_ += p_.dt;
   lastMach_ = std::sqrt(stats.maxU2);
   canUndo_ = spare_ != nullptr;
   profile.lap(Stage::latticeFill, t2);
@@ -196,6 +238,7 @@ void Lattice::undoStep() {
   // The step wrote the other array and swapped: the state before it is intact there.
   std::swap(f_, spare_);
   layout_ = flipped(layout_);
+  time_ = timeBefore_;
   canUndo_ = false;
 }
 

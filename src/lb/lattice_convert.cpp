@@ -127,10 +127,10 @@ void Lattice::convertPopulations(const ResolvedLattice& next, double machLimit) 
     }
   for (const auto& kind : kinds_)
     if (const auto* edge = dynamic_cast<const ZouHeNode*>(kind.get()))
-      for (const std::int64_t x : edge->nodes) {
+      for (std::size_t m = 0; m < edge->nodes.size(); ++m) {
         double n[Q];
-        edge->pulled(from, x, n);
-        bad = std::min(bad, convertFluid(x, n));
+        edge->pulled(from, m, n);
+        bad = std::min(bad, convertFluid(edge->nodes[m], n));
       }
   // Covered cells, over the fluid's: their collision gave the first moment
   // (1 - B) j + B rho u_s + F.

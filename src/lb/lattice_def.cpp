@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "sandflow/core/error.hpp"
 #include "sandflow/core/memory.hpp"
@@ -11,6 +12,55 @@ namespace sf::lb {
 
 std::string unstableTau(double tau) {
   return "tau " + formatNumber(tau) + " is unstable: must exceed " + formatNumber(kTauMin);
+}
+
+bool sameSide(const SideDef& a, const SideDef& b) {
+  return a.kind == b.kind && a.velocity == b.velocity && a.pressure == b.pressure &&
+         a.profile == b.profile && a.ramp == b.ramp && a.expr == b.expr && a.timed == b.timed &&
+         a.values == b.values;
+}
+
+int sideNodeCount(const ResolvedLattice& r, int side) {
+  return side == left || side == right ? r.ny : r.nx;
+}
+
+double sideLength(const ResolvedLattice& r, int side) {
+  return sideNodeCount(r, side) * r.h;
+}
+
+double rampFactor(double t, double T) {
+  if (!(T > 0) || t >= T) return 1.0;
+  if (t <= 0) return 0.0;
+  return 0.5 * (1 - std::cos(std::numbers::pi * t / T));
+}
+
+Vec2 sideVelocityAt(const ResolvedLattice& r, int side, int k) {
+  const SideDef& d = r.def.sides[side];
+  if (d.byExpression()) return d.values[k];
+  if (d.profile == SideProfile::uniform) return d.velocity;
+  const double s = sideNodeDistance(r, k), L = sideLength(r, side);
+  return d.velocity * (4 * s * (L - s) / (L * L));
+}
+
+void checkSideValues(const ResolvedLattice& r, int side, const std::vector<Vec2>& values) {
+  const std::string name = sideNames[side];
+  const int n = sideNodeCount(r, side);
+  if (int(values.size()) != n)
+    throw Error("VALUE WALLS", name + " side: " + std::to_string(values.size()) +
+                                   " velocities for its " + std::to_string(n) + " nodes");
+  for (int k = 0; k < n; ++k) {
+    const Vec2& u = values[k];
+    const std::string at = " at s = " + formatNumber(sideNodeDistance(r, k));
+    if (!u.allFinite())
+      throw Error("VALUE WALLS", name + " side: velocity {" + formatNumber(u.x()) + " " +
+                                     formatNumber(u.y()) + "}" + at + " is not finite");
+    const double mach = r.velocityToLattice(u.norm());
+    if (mach > maxBoundaryMach)
+      throw Error("VALUE WALLS", name + " velocity " + formatNumber(u.norm()) + at + " is Mach " +
+                                     formatNumber(mach) +
+                                     " on this lattice (c = " + formatNumber(r.latticeSpeed()) +
+                                     "): must be below " + formatNumber(maxBoundaryMach));
+  }
 }
 namespace {
 
@@ -139,14 +189,17 @@ ResolvedLattice resolve(const LatticeDef& def) {
                                      sideKindNames[int(b)] + ": periodic sides come in pairs");
   }
   auto open = [&](int s) {
-    return def.sides[s].kind == SideKind::velocity || def.sides[s].kind == SideKind::pressure;
+    const SideKind k = def.sides[s].kind;
+    return k == SideKind::velocity || k == SideKind::pressure || k == SideKind::outflow;
   };
   for (int v : {left, right})
     for (int hzn : {bottom, top})
       if (open(v) && open(hzn))
-        throw Error("VALUE WALLS", std::string(sideNames[v]) + " and " + sideNames[hzn] +
-                                       " are both velocity/pressure sides: they may not meet at "
-                                       "a corner (make one of them a wall)");
+        throw Error(
+            "VALUE WALLS",
+            std::string(sideNames[v]) + " and " + sideNames[hzn] +
+                " are both open (velocity, pressure or outflow) sides: they may not meet at "
+                "a corner (make one of them a wall)");
   for (int s = 0; s < 4; ++s) {
     const SideDef& side = def.sides[s];
     if (!side.velocity.allFinite())
@@ -158,6 +211,15 @@ ResolvedLattice resolve(const LatticeDef& def) {
                                      formatNumber(mach) +
                                      " on this lattice (c = " + formatNumber(r.latticeSpeed()) +
                                      "): must be below " + formatNumber(maxBoundaryMach));
+    if (side.kind != SideKind::velocity &&
+        (side.byExpression() || side.ramp != 0 || side.profile != SideProfile::uniform))
+      throw Error("VALUE WALLS", std::string(sideNames[s]) +
+                                     ": -profile, -expr and -ramp belong to velocity sides");
+    if (!(side.ramp >= 0) || !std::isfinite(side.ramp))
+      throw Error("VALUE WALLS", std::string(sideNames[s]) +
+                                     " side: -ramp must be a time >= 0, got " +
+                                     formatNumber(side.ramp));
+    if (side.byExpression()) checkSideValues(r, s, side.values);
     if (side.kind == SideKind::pressure && !(side.pressure > 0))
       throw Error("VALUE WALLS", std::string(sideNames[s]) + " pressure must be > 0, got " +
                                      formatNumber(side.pressure));

@@ -16,6 +16,13 @@ void putDef(ByteWriter& out, const LatticeDef& d) {
   for (const SideDef& side : d.sides) {
     out.put(std::int32_t(side.kind)), putVec2(out, side.velocity), out.put(side.pressure);
   }
+  // Version 5: velocity sides' profile, ramp and expressions (text and values).
+  for (const SideDef& side : d.sides) {
+    out.put(std::int32_t(side.profile)), out.put(side.ramp);
+    out.put(side.expr[0]), out.put(side.expr[1]), out.put(side.timed);
+    out.put(std::uint64_t(side.values.size()));
+    for (const Vec2& v : side.values) putVec2(out, v);
+  }
 }
 
 template <class Enum>
@@ -34,9 +41,21 @@ LatticeDef getDef(ByteReader& in) {
   d.collision = getEnum<Collision>(in, 2, "collision");
   d.forceScheme = getEnum<ForceScheme>(in, 2, "forcing scheme");
   d.magic = in.get<double>("TRT magic");
+  // An outflow side arrived with version 5.
+  const int kinds = in.version < 5 ? int(SideKind::outflow) : int(sideKindNames.size());
   for (SideDef& side : d.sides) {
-    side.kind = getEnum<SideKind>(in, int(sideKindNames.size()), "side kind");
+    side.kind = getEnum<SideKind>(in, kinds, "side kind");
     side.velocity = getVec2(in, "side velocity"), side.pressure = in.get<double>("side pressure");
+  }
+  if (in.version < 5) return d;
+  for (SideDef& side : d.sides) {
+    side.profile = getEnum<SideProfile>(in, int(sideProfileNames.size()), "side profile");
+    side.ramp = in.get<double>("side ramp");
+    in.get(side.expr[0], "side expression"), in.get(side.expr[1], "side expression");
+    side.timed = in.getBool("side expression");
+    const std::size_t n = in.count(2 * sizeof(double), "side values");
+    side.values.resize(n);
+    for (Vec2& v : side.values) v = getVec2(in, "side values");
   }
   return d;
 }

@@ -63,6 +63,8 @@ class Classifier {
         return NodeKind::noslip;
       case SideKind::slip:
         return NodeKind::slip;
+      case SideKind::outflow:
+        return NodeKind::outflow;
       default:
         return NodeKind::open;
     }
@@ -132,6 +134,7 @@ void Lattice::rebuildTopology() {
   auto bounce = std::make_unique<BounceBackNode>();
   auto slip = std::make_unique<SlipNode>();
   auto solid = std::make_unique<FixedSolidNode>();
+  auto outflow = std::make_unique<OutflowNode>();
   std::vector<std::unique_ptr<ZouHeNode>> zouHe(4);
 
   for (int j = 0; j < ny; ++j) {
@@ -184,6 +187,14 @@ void Lattice::rebuildTopology() {
           continue;
         }
         if (w.kind == NodeKind::open && k != NodeKind::fluid) continue;  // Zou-He rebuilds it
+        if (w.kind == NodeKind::outflow) {
+          // The node outside holds the state of the edge node beside it.
+          const Where beside = where.at(std::clamp(si, 0, nx - 1), std::clamp(sj, 0, ny - 1));
+          if (holdsFluidKind(beside.kind)) {
+            outflow->links.push_back({node, in, in, std::int32_t(beside.node), 0.0, w.owner});
+            continue;
+          }
+        }
         const int back = d2q9::opposite[d];
         if (w.kind == NodeKind::slip && d % 2 == 0) {
           // Specular reflection off an axis-aligned wall: find which neighbour
@@ -213,7 +224,7 @@ void Lattice::rebuildTopology() {
 
   const Slots slots{stride_, rowStride_};
   for (LinkNode* l : {static_cast<LinkNode*>(periodic.get()), static_cast<LinkNode*>(bounce.get()),
-                      static_cast<LinkNode*>(slip.get())})
+                      static_cast<LinkNode*>(slip.get()), static_cast<LinkNode*>(outflow.get())})
     l->resolve(slots);
   kinds_.clear();
   kinds_.push_back(std::move(fluid));
@@ -222,7 +233,9 @@ void Lattice::rebuildTopology() {
   if (!periodic->links.empty()) kinds_.push_back(std::move(periodic));
   if (!bounce->links.empty()) kinds_.push_back(std::move(bounce));
   if (!slip->links.empty()) kinds_.push_back(std::move(slip));
+  if (!outflow->links.empty()) kinds_.push_back(std::move(outflow));
   if (solid->nodes) kinds_.push_back(std::move(solid));
+  imposeSides(time_ + p_.dt);
   // Until the next step's list.
   static_cast<FluidNode&>(*kinds_.front()).planSweep(covered_.cells, covered_.ascending);
 

@@ -32,10 +32,10 @@ Vec2 rotateBack(const Vec2& v, int k) {  // rotate clockwise by k quarter turns
 // The side's frame: local direction -> global, and the imposed velocity and
 // Guo's half force turned into it.
 struct Frame {
+  int k;
   int g[Q];
   Vec2 u, half;
-  Frame(const ZouHeNode& z, const StepContext& ctx) {
-    const int k = quarterTurns(z.side);
+  Frame(const ZouHeNode& z, const StepContext& ctx) : k(quarterTurns(z.side)) {
     for (int j = 0; j < Q; ++j) g[j] = d2q9::rotate(j, k);
     u = rotateBack(z.velocity, k);
     // Guo forcing defines the velocity with half the force: the rebuilt first
@@ -47,8 +47,9 @@ struct Frame {
 };
 
 // Replaces the three populations of `f` (global directions) that would come
-// from outside the side with Zou and He's.
-void rebuildUnknowns(const ZouHeNode& z, const Frame& fr, double (&f)[Q]) {
+// from outside the side with Zou and He's; `u` is the velocity to impose, in
+// the side's frame.
+void rebuildUnknowns(const ZouHeNode& z, const Frame& fr, const Vec2& u, double (&f)[Q]) {
   const int* g = fr.g;
   // Known populations in the local frame: 0, 3, 7 (tangential), 4, 5, 6 (outgoing).
   const double tangential = f[g[0]] + f[g[3]] + f[g[7]];
@@ -59,9 +60,9 @@ void rebuildUnknowns(const ZouHeNode& z, const Frame& fr, double (&f)[Q]) {
     jx = rho - tangential - 2 * outgoing;
     jy = -fr.half.y();
   } else {
-    rho = (tangential + 2 * outgoing - fr.half.x()) / (1 - fr.u.x());
-    jx = rho * fr.u.x() - fr.half.x();
-    jy = rho * fr.u.y() - fr.half.y();
+    rho = (tangential + 2 * outgoing - fr.half.x()) / (1 - u.x());
+    jx = rho * u.x() - fr.half.x();
+    jy = rho * u.y() - fr.half.y();
   }
   const double shear = 0.5 * (f[g[3]] - f[g[7]]);
   f[g[1]] = f[g[5]] + 2.0 / 3.0 * jx;
@@ -81,10 +82,12 @@ StepStats run(const ZouHeNode& z, const StepContext& ctx) {
   const Slots slots = ctx.slots();
   const Layout to = flipped(ctx.from);
   StepStats stats;
-  for (const std::int64_t node : z.nodes) {
+  const bool varies = !z.velocities.empty();
+  for (std::size_t m = 0; m < z.nodes.size(); ++m) {
+    const std::int64_t node = z.nodes[m];
     double f[Q];
     pull(ctx, node, f);
-    rebuildUnknowns(z, frame, f);
+    rebuildUnknowns(z, frame, varies ? rotateBack(z.velocities[m], frame.k) : frame.u, f);
     double u2;
     const double density = collide<C, S>(f, ctx.params, u2);
     stats.merge({density, u2});
@@ -105,9 +108,11 @@ StepStats ZouHeNode::streamCollide(const StepContext& ctx) const {
              : run<Collision::trt, ForceScheme::nodal>(*this, ctx);
 }
 
-void ZouHeNode::pulled(const StepContext& ctx, std::int64_t node, double (&f)[Q]) const {
-  pull(ctx, node, f);
-  rebuildUnknowns(*this, Frame(*this, ctx), f);
+void ZouHeNode::pulled(const StepContext& ctx, std::size_t m, double (&f)[Q]) const {
+  pull(ctx, nodes[m], f);
+  const Frame frame(*this, ctx);
+  rebuildUnknowns(*this, frame, velocities.empty() ? frame.u : rotateBack(velocities[m], frame.k),
+                  f);
 }
 
 }  // namespace sf::lb

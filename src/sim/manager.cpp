@@ -197,6 +197,7 @@ void Manager::step() {
   coupler_.attachProfile(&profile_);
   if (lattice_) {
     lattice_->attachProfile(&profile_);
+    lattice_->setTime(time_);  // its sides ramp by the scene's clock
     // Elements can refuse the step after the fluid has made it: the fluid
     // keeps its state before it to go back to. Alone it streams in place.
     lattice_->keepPrevious(!assembly_.empty());

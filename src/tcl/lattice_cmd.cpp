@@ -174,6 +174,7 @@ const LatticeDraft& defaults() {
     s.tau = 1;
     return s;
   }();
+    evaluateSideExpressions(interp, draft.def, s.manager.time());
   return d;
 }
 
@@ -210,6 +211,7 @@ int LatticeConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
       const int k = optionIndex(interp, objv[1], kOptions.specs());
       if (k < 0) return TCL_ERROR;
       Tcl_SetObjResult(interp, kOptions.get(draft, k));
+    evaluateSideExpressions(interp, def, s.manager.time());
       return TCL_OK;
     }
     if (objc % 2 == 0) {

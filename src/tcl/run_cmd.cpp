@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "lattice_sides.hpp"
 #include "sandflow/tcl/args.hpp"
 #include "sandflow/tcl/session.hpp"
 
@@ -15,6 +16,7 @@ const OptionSpec kRunOptions[] = {
     {nullptr, nullptr, nullptr}};
 
 // One step, with the kernel's error turned into a Tcl error and warnings passed
+    updateTimedSides(s.interp, s.manager);  // -expr sides in $t, at the step's time
 // on, then the recorders (output csv, output movie) that are due.
 int advance(Session& s) {
   const int code = guarded(s.interp, [&] {

@@ -14,7 +14,8 @@
 namespace sf::io {
 
 // 2: each warning keeps its remedy (sf::Remedy) beside its sentence.
-inline constexpr int kCheckpointVersion = 4;
+// 5: outflow sides; velocity sides' profile, ramp and expressions.
+inline constexpr int kCheckpointVersion = 5;
 
 void saveCheckpoint(const std::string& path, const sim::Manager& manager,
                     const std::string& session);

@@ -73,6 +73,16 @@ class Lattice {
   // finite) is refused with nothing changed.
   void reconfigure(const ResolvedLattice& params, double machLimit = 0.3);
 
+  // The time of the state (the clock velocity sides ramp by): each step adds
+  // dt; the owner sets it to its own clock (a lattice made or loaded mid-run).
+  double time() const { return time_; }
+  void setTime(double t);
+  // New values for a velocity side given by expressions (SideDef::values),
+  // for the steps from now on; refused (sf::Error, nothing changed) when they
+  // do not fit the side (checkSideValues). The command layer evaluates
+  // expressions in $t before every step.
+  void setSideValues(int side, std::vector<Vec2> values);
+
   // One step. On NaN or a Mach number above `machLimit` it throws sf::Error
   // (code "UNSTABLE ...") naming the node; with keepPrevious the state before
   // the step stays, else (in place) the step has been taken.
@@ -181,6 +191,10 @@ class Lattice {
     return std::int64_t(j + 1) * rowStride_ + (i + 1);
   }
   void rebuildTopology();
+  // The velocity sides' nodes' velocities at time t (lattice units): their
+  // profile, expressions' values and ramp.
+  void imposeSides(double t);
+  bool sidesVary() const;
   StepContext context() const { return contextFor(p_); }
   StepContext contextFor(const ResolvedLattice& params) const;
   // Rewrites the populations for `next` from the present parameters, keeping
@@ -221,6 +235,7 @@ class Lattice {
   std::uint64_t topology_ = 0;
   ThreadCount threads_;
   double lastMach_ = 0.0;
+  double time_ = 0.0, timeBefore_ = 0.0;
   bool canUndo_ = false;
   ProfileLink profile_;
 };

@@ -6,23 +6,46 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "sandflow/geometry/vec2.hpp"
 #include "sandflow/lb/collision.hpp"
 
 namespace sf::lb {
 
-enum class SideKind { periodic, noslip, slip, velocity, pressure };
+enum class SideKind { periodic, noslip, slip, velocity, pressure, outflow };
 enum Side { left = 0, right = 1, bottom = 2, top = 3 };
 inline constexpr std::array<const char*, 4> sideNames = {"left", "right", "bottom", "top"};
-inline constexpr std::array<const char*, 5> sideKindNames = {"periodic", "noslip", "slip",
-                                                             "velocity", "pressure"};
+inline constexpr std::array<const char*, 6> sideKindNames = {"periodic", "noslip",   "slip",
+                                                             "velocity", "pressure", "outflow"};
+
+// How a velocity side's velocity varies along it: the same everywhere, or
+// Poiseuille's parabola, zero at the side's two ends and `velocity` midway.
+enum class SideProfile { uniform, parabolic };
+inline constexpr std::array<const char*, 2> sideProfileNames = {"uniform", "parabolic"};
 
 struct SideDef {
+  SideDef() = default;
+  SideDef(SideKind k, const Vec2& u = Vec2::Zero(), double p = 0.0)
+      : kind(k), velocity(u), pressure(p) {}
   SideKind kind = SideKind::noslip;
   Vec2 velocity = Vec2::Zero();  // wall velocity (noslip) or inflow velocity (velocity)
   double pressure = 0.0;         // pressure boundary, p = c_s^2 rho
+  // Velocity sides only.
+  SideProfile profile = SideProfile::uniform;
+  double ramp = 0.0;  // time over which the velocity rises smoothly from 0 (0: at once)
+  // A profile given as expressions (the command layer's language, which the
+  // kernel does not read): their text, kept for cget and checkpoints, and
+  // their values at the side's nodes (physical units, one per node from the
+  // side's start), which the command layer evaluates once, or before every
+  // step when they depend on time (`timed`).
+  std::array<std::string, 2> expr;
+  bool timed = false;
+  std::vector<Vec2> values;
+  bool byExpression() const { return !expr[0].empty(); }
 };
+// Whether two sides impose the same thing (kind, values, profile, ramp, expressions).
+bool sameSide(const SideDef& a, const SideDef& b);
 
 struct LatticeDef {
   Vec2 origin = Vec2::Zero();
@@ -76,5 +99,23 @@ ResolvedLattice resolve(const LatticeDef& def);
 
 // Largest lattice Mach number (|u| / c) a boundary may impose.
 inline constexpr double maxBoundaryMach = 0.3;
+
+// The nodes along side `side` (its edge row, from the side's start: the
+// bottom for left and right, the left for bottom and top), their distance s
+// from the start and the side's length L.
+int sideNodeCount(const ResolvedLattice& r, int side);
+double sideLength(const ResolvedLattice& r, int side);
+inline double sideNodeDistance(const ResolvedLattice& r, int k) {
+  return (k + 0.5) * r.h;
+}
+// The factor of a side's velocity at time t under a ramp over T:
+// (1 - cos(pi t / T)) / 2 up to T (smooth: no jump in velocity nor
+// acceleration's start), then 1.
+double rampFactor(double t, double T);
+// Side `side`'s velocity at its k-th node before any ramp (physical units).
+Vec2 sideVelocityAt(const ResolvedLattice& r, int side, int k);
+// Refuses values for an expression side that do not fit it (count, finite,
+// Mach): sf::Error "VALUE WALLS" naming the side, the node's s and the value.
+void checkSideValues(const ResolvedLattice& r, int side, const std::vector<Vec2>& values);
 
 }  // namespace sf::lb

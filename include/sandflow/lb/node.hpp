@@ -34,6 +34,7 @@ enum class NodeKind : std::uint8_t {
   velocity = 4,  // Zou-He velocity edge node (holds fluid)
   pressure = 5,  // Zou-He pressure edge node (holds fluid)
   open = 6,      // outside a velocity/pressure side: never read
+  outflow = 7,   // outside an outflow side: written from the fluid inside (OutflowNode)
 };
 
 // The array's two layouts. Node x's post-collision population f*_i and the
@@ -249,13 +250,27 @@ class ZouHeNode final : public Node {
   bool pressure = false;
   double density = 1.0;          // pressure sides
   Vec2 velocity = Vec2::Zero();  // velocity sides, lattice units
+  // Per node (lattice units) when the velocity varies along the side or in
+  // time; empty: `velocity` at every node.
+  std::vector<Vec2> velocities;
   std::vector<std::int64_t> nodes;
   const char* name() const override { return pressure ? "pressure" : "velocity"; }
   std::size_t count() const override { return nodes.size(); }
   StepStats streamCollide(const StepContext& ctx) const override;
-  // The populations `node` pulls from ctx.src, the ones from outside rebuilt:
-  // what its next collision will see.
-  void pulled(const StepContext& ctx, std::int64_t node, double (&f)[d2q9::Q]) const;
+  // The populations nodes[m] pulls from ctx.src, the ones from outside
+  // rebuilt: what its next collision will see.
+  void pulled(const StepContext& ctx, std::size_t m, double (&f)[d2q9::Q]) const;
+};
+
+// An outflow side (docs/lattice.md): the populations that would come in from
+// outside are the post-collision ones of the edge node beside the node
+// outside, along the side (zero-gradient extrapolation, as if the node outside
+// held its inner neighbour's state). Links of the periodic form (out = in,
+// `from` that edge node), written with the other fills after each step: the
+// edge nodes stay plain fluid nodes and the step keeps no state of its own.
+class OutflowNode final : public LinkNode {
+ public:
+  const char* name() const override { return "outflow"; }
 };
 
 }  // namespace sf::lb
