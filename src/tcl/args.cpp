@@ -130,6 +130,25 @@ bool getChoice(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, const char* c
                                    &index) == TCL_OK;
 }
 
+bool getElementIds(Tcl_Interp* interp, Tcl_Obj* obj, std::vector<int>& ids) {
+  int n = 0;
+  Tcl_Obj** items = nullptr;
+  if (Tcl_ListObjGetElements(interp, obj, &n, &items) != TCL_OK) return false;
+  ids.assign(std::size_t(n), 0);
+  for (int i = 0; i < n; ++i)
+    if (!getInt(interp, items[i], "-elements", ids[std::size_t(i)])) return false;
+  if (ids.empty()) return reject(interp, "VALUE ELEMENTS", "-elements is empty");
+  return true;
+}
+
+bool getSoleId(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], const char* what, int& id) {
+  if (objc != 2) {
+    Tcl_WrongNumArgs(interp, 1, objv, what);
+    return false;
+  }
+  return getInt(interp, objv[1], what, id);
+}
+
 int optionIndex(Tcl_Interp* interp, Tcl_Obj* name, const OptionSpec* table) {
   int index = -1;
   if (Tcl_GetIndexFromObjStruct(interp, name, table, sizeof(OptionSpec), "option", TCL_EXACT,
@@ -192,19 +211,18 @@ std::string helpText(const char* noun, std::initializer_list<const char*> verbs,
   return text;
 }
 
-bool answerHelp(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], const char* noun,
-                std::initializer_list<const char*> forms, const OptionSpec* options) {
+bool answerHelp(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], const std::string& text) {
   if (objc != 2 || std::string_view(Tcl_GetString(objv[1])) != "help") return false;
-  std::string text;
-  for (const char* f : forms) text += std::string(noun) + " " + f + "\n";
-  text += std::string(noun) + " help\n";
-  Tcl_SetObjResult(interp, newString(text + helpText(noun, {}, options)));
+  Tcl_SetObjResult(interp, newString(text));
   return true;
 }
 
-void makeEnsemble(Tcl_Interp* interp, const char* qualifiedName, std::initializer_list<Verb> verbs,
-                  ClientData data) {
-  Tcl_Namespace* ns = Tcl_CreateNamespace(interp, qualifiedName, nullptr, nullptr);
+namespace {
+
+void ensembleOf(Tcl_Interp* interp, const char* qualifiedName, const std::vector<Verb>& verbs,
+                ClientData data) {
+  Tcl_Namespace* ns = Tcl_FindNamespace(interp, qualifiedName, nullptr, 0);
+  if (!ns) ns = Tcl_CreateNamespace(interp, qualifiedName, nullptr, nullptr);
   Tcl_Obj* map = Tcl_NewDictObj();
   for (const Verb& v : verbs) {
     const std::string full = std::string(qualifiedName) + "::" + v.name;
@@ -213,6 +231,40 @@ void makeEnsemble(Tcl_Interp* interp, const char* qualifiedName, std::initialize
   }
   Tcl_Command ensemble = Tcl_CreateEnsemble(interp, qualifiedName, ns, 0);
   Tcl_SetEnsembleMappingDict(interp, ensemble, map);
+}
+
+// `NOUN help` or `NOUN options`: the fixed text held as the command's data.
+int AnswerText(ClientData text, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  if (objc != 1) {
+    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
+    return TCL_ERROR;
+  }
+  Tcl_SetObjResult(interp, newString(*static_cast<const std::string*>(text)));
+  return TCL_OK;
+}
+
+void answerVerb(Tcl_Interp* interp, const std::string& full, std::string text) {
+  Tcl_CreateObjCommand(interp, full.c_str(), AnswerText, new std::string(std::move(text)),
+                       [](ClientData text) { delete static_cast<std::string*>(text); });
+}
+
+}  // namespace
+
+void makeEnsemble(Tcl_Interp* interp, const char* qualifiedName, std::initializer_list<Verb> verbs,
+                  ClientData data, NounAnswers answers) {
+  std::vector<Verb> all(verbs);
+  all.push_back({"help", nullptr});
+  if (!answers.options.empty()) all.push_back({"options", nullptr});
+  const std::string prefix = std::string(qualifiedName) + "::";
+  Tcl_CreateNamespace(interp, qualifiedName, nullptr, nullptr);
+  answerVerb(interp, prefix + "help", std::move(answers.help));
+  if (!answers.options.empty()) answerVerb(interp, prefix + "options", std::move(answers.options));
+  ensembleOf(interp, qualifiedName, all, data);
+}
+
+void makeEnsemble(Tcl_Interp* interp, const char* qualifiedName, std::initializer_list<Verb> verbs,
+                  ClientData data) {
+  ensembleOf(interp, qualifiedName, verbs, data);
 }
 
 }  // namespace sf::tcl

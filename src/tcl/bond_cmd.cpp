@@ -22,45 +22,57 @@ Row bondRow(OptionInfo info, double BondDraft::*field) {
   return memberRow(info, field);
 }
 const OptionTable<BondDraft> kCreateOptions{
-    bondRow({"-stiffness",
-             "k",
-             "bond stiffness",
-             ValueKind::real,
-             "force/length",
-             {},
-             nullptr,
-             nullptr,
-             nullptr,
-             "the materials' -bondstiffness, the smaller"},
+    bondRow({.name = "-stiffness",
+             .synopsis = "k",
+             .help = "bond stiffness",
+             .unit = "force/length",
+             .defaultText = "the materials' -bondstiffness, the smaller"},
             &BondDraft::stiffness),
-    bondRow({"-strength",
-             "s",
-             "tensile strength",
-             ValueKind::real,
-             "force",
-             {},
-             nullptr,
-             nullptr,
-             nullptr,
-             "the materials' -bondstrength, the smaller"},
+    bondRow({.name = "-strength",
+             .synopsis = "s",
+             .help = "tensile strength",
+             .unit = "force",
+             .defaultText = "the materials' -bondstrength, the smaller"},
             &BondDraft::strength),
-    bondRow({"-shearstrength",
-             "s",
-             "shear strength",
-             ValueKind::real,
-             "force",
-             {},
-             nullptr,
-             nullptr,
-             nullptr,
-             "the tensile strength"},
+    bondRow({.name = "-shearstrength",
+             .synopsis = "s",
+             .help = "shear strength",
+             .unit = "force",
+             .defaultText = "the tensile strength"},
             &BondDraft::shearStrength),
 };
-const OptionSpec kAutoOptions[] = {{"-elements", "IDS", "only among these elements (default all)"},
-                                   {"-gap", "g", "largest surface gap bonded (default 0)"},
-                                   {nullptr, nullptr, nullptr}};
-const OptionSpec kBrokenOptions[] = {{"-since", "t", "only breaks at or after time t"},
-                                     {nullptr, nullptr, nullptr}};
+// What bond auto is asked: the elements (empty: all) and the gap.
+struct AutoDraft {
+  std::vector<int> ids;
+  double gap = 0;
+};
+const OptionTable<AutoDraft> kAutoOptions{
+    parsedRow<AutoDraft>({.name = "-elements",
+                          .synopsis = "IDS",
+                          .help = "only among these elements",
+                          .defaultText = "all"},
+                         [](Tcl_Interp* interp, Tcl_Obj* v, AutoDraft& d) {
+                           return getElementIds(interp, v, d.ids);
+                         }),
+    memberRow({.name = "-gap",
+               .synopsis = "g",
+               .help = "largest surface gap bonded",
+               .unit = "length",
+               .range = {.min = 0}},
+              &AutoDraft::gap),
+};
+// What bond broken is asked: the breaks since a time (all by default).
+struct BrokenDraft {
+  double since = -std::numeric_limits<double>::infinity();
+};
+const OptionTable<BrokenDraft> kBrokenOptions{
+    memberRow({.name = "-since",
+               .synopsis = "t",
+               .help = "only breaks at or after time t",
+               .unit = "time",
+               .defaultText = "all"},
+              &BrokenDraft::since),
+};
 
 int BondCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc < 3 || objc % 2 == 0) {
@@ -86,30 +98,11 @@ int BondAuto(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
     Tcl_WrongNumArgs(interp, 1, objv, "?-elements IDS? ?-gap g?");
     return TCL_ERROR;
   }
-  std::vector<int> ids;
-  double gap = 0;
-  if (!parseOptions(interp, objc, objv, 1, kAutoOptions, [&](int k, Tcl_Obj* o) {
-        if (k == 1) {
-          if (!getDouble(interp, o, "-gap", gap)) return false;
-          if (gap < 0)
-            return reject(interp, "VALUE GAP", "-gap must be >= 0, got " + formatNumber(gap));
-          return true;
-        }
-        int n = 0;
-        Tcl_Obj** items = nullptr;
-        if (Tcl_ListObjGetElements(interp, o, &n, &items) != TCL_OK) return false;
-        ids.clear();
-        for (int i = 0; i < n; ++i) {
-          int id = 0;
-          if (!getInt(interp, items[i], "-elements", id)) return false;
-          ids.push_back(id);
-        }
-        if (ids.empty()) return reject(interp, "VALUE ELEMENTS", "-elements is empty");
-        return true;
-      }))
-    return TCL_ERROR;
+  AutoDraft draft;
+  if (!kAutoOptions.apply(interp, objc, objv, 1, draft)) return TCL_ERROR;
   return guarded(interp, [&] {
-    Tcl_SetObjResult(interp, Tcl_NewIntObj(sessionOf(data).manager.assembly().bondAll(ids, gap)));
+    Tcl_SetObjResult(
+        interp, Tcl_NewIntObj(sessionOf(data).manager.assembly().bondAll(draft.ids, draft.gap)));
     return TCL_OK;
   });
 }
@@ -126,17 +119,9 @@ int BondIds(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
   return TCL_OK;
 }
 
-bool getBondId(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int& id) {
-  if (objc != 2) {
-    Tcl_WrongNumArgs(interp, 1, objv, "BID");
-    return false;
-  }
-  return getInt(interp, objv[1], "BID", id);
-}
-
 int BondInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   int id = 0;
-  if (!getBondId(interp, objc, objv, id)) return TCL_ERROR;
+  if (!getSoleId(interp, objc, objv, "BID", id)) return TCL_ERROR;
   return guarded(interp, [&] {
     const dem::Bond& b = sessionOf(data).manager.assembly().bondInfo(id);
     Tcl_Obj* ids[2] = {Tcl_NewIntObj(b.idA), Tcl_NewIntObj(b.idB)};
@@ -153,7 +138,7 @@ int BondInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
 
 int BondDelete(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   int id = 0;
-  if (!getBondId(interp, objc, objv, id)) return TCL_ERROR;
+  if (!getSoleId(interp, objc, objv, "BID", id)) return TCL_ERROR;
   return guarded(interp, [&] {
     sessionOf(data).manager.assembly().unbond(id);
     return TCL_OK;
@@ -165,11 +150,9 @@ int BondBroken(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
     Tcl_WrongNumArgs(interp, 1, objv, "?-since t?");
     return TCL_ERROR;
   }
-  double since = -std::numeric_limits<double>::infinity();
-  if (objc == 3) {
-    if (optionIndex(interp, objv[1], kBrokenOptions) < 0) return TCL_ERROR;
-    if (!getDouble(interp, objv[2], "-since", since)) return TCL_ERROR;
-  }
+  BrokenDraft draft;
+  if (!kBrokenOptions.apply(interp, objc, objv, 1, draft)) return TCL_ERROR;
+  const double since = draft.since;
   Tcl_Obj* l = Tcl_NewListObj(0, nullptr);
   for (const dem::BondBreak& e : sessionOf(data).manager.assembly().breaks()) {
     if (e.time < since) continue;
@@ -178,32 +161,6 @@ int BondBroken(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
     Tcl_ListObjAppendElement(nullptr, l, Tcl_NewListObj(4, item));
   }
   Tcl_SetObjResult(interp, l);
-  return TCL_OK;
-}
-
-// create's options, one dict each (as `sim options`).
-int BondOptions(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
-    return TCL_ERROR;
-  }
-  Tcl_SetObjResult(interp, kCreateOptions.describe(BondDraft{}));
-  return TCL_OK;
-}
-
-int BondHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
-    return TCL_ERROR;
-  }
-  std::string text = kCreateOptions.help(
-      "bond",
-      {"create ID1 ID2 ?-stiffness k? ?-strength s? ?-shearstrength s?   -> bond id",
-       "auto ?-elements IDS? ?-gap g?   -> number of bonds made", "ids", "info BID", "delete BID",
-       "broken ?-since t?   -> list of {time x y angle} break events",
-       "options   -> create's options as dicts", "help"},
-      BondDraft{});
-  Tcl_SetObjResult(interp, newString(text));
   return TCL_OK;
 }
 
@@ -216,10 +173,15 @@ void registerBondCommands(Tcl_Interp* interp, Session* session) {
                 {"ids", BondIds},
                 {"info", BondInfo},
                 {"delete", BondDelete},
-                {"broken", BondBroken},
-                {"options", BondOptions},
-                {"help", BondHelp}},
-               session);
+                {"broken", BondBroken}},
+               session,
+               kCreateOptions.answers(
+                   "bond",
+                   {"create ID1 ID2 ?-stiffness k? ?-strength s? ?-shearstrength s?   -> bond id",
+                    "auto ?-elements IDS? ?-gap g?   -> number of bonds made", "ids", "info BID",
+                    "delete BID", "broken ?-since t?   -> list of {time x y angle} break events",
+                    "options   -> create's options as dicts", "help"},
+                   BondDraft{}));
 }
 
 }  // namespace sf::tcl

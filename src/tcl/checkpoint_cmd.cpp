@@ -6,15 +6,23 @@
 
 #include "sandflow/io/checkpoint.hpp"
 #include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/picture.hpp"
 #include "sandflow/tcl/session.hpp"
 
 namespace sf::tcl {
 namespace {
 
-const OptionSpec kLoadOptions[] = {
-    {"-recordings", "0|1", "start the checkpoint's recordings again (default 1)"},
-    {nullptr, nullptr, nullptr}};
+// What checkpoint load is asked, besides the file.
+struct LoadDraft {
+  bool recordings = true;
+};
+const OptionTable<LoadDraft> kLoadOptions{
+    memberRow({.name = "-recordings",
+               .synopsis = "0|1",
+               .help = "start the checkpoint's recordings again"},
+              &LoadDraft::recordings),
+};
 
 // The session's part: {view {-field ...} recordings {{kind path command} ...}}.
 std::string sessionText(const Session& s) {
@@ -129,10 +137,9 @@ int CheckpointLoad(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const
   }
   Session& s = sessionOf(data);
   if (refuseWhileRunning(s) != TCL_OK) return TCL_ERROR;
-  bool restart = true;
-  if (!parseOptions(interp, objc, objv, 2, kLoadOptions,
-                    [&](int, Tcl_Obj* o) { return getBool(interp, o, "-recordings", restart); }))
-    return TCL_ERROR;
+  LoadDraft load;
+  if (!kLoadOptions.apply(interp, objc, objv, 2, load)) return TCL_ERROR;
+  const bool restart = load.recordings;
   const std::string path = Tcl_GetString(objv[1]);
   io::Checkpoint c;
   if (guarded(interp, [&] {
@@ -167,18 +174,11 @@ int CheckpointLoad(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const
   return TCL_OK;
 }
 
-int CheckpointHelp(ClientData, Tcl_Interp* interp, int, Tcl_Obj* const[]) {
-  Tcl_SetObjResult(interp,
-                   newString(helpText("checkpoint", {"save FILE", "load FILE"}, kLoadOptions)));
-  return TCL_OK;
-}
-
 }  // namespace
 
 void registerCheckpointCommands(Tcl_Interp* interp, Session* session) {
-  makeEnsemble(interp, "::sf::checkpoint",
-               {{"save", CheckpointSave}, {"load", CheckpointLoad}, {"help", CheckpointHelp}},
-               session);
+  makeEnsemble(interp, "::sf::checkpoint", {{"save", CheckpointSave}, {"load", CheckpointLoad}},
+               session, kLoadOptions.answers("checkpoint", {"save FILE", "load FILE"}, {}, false));
 }
 
 }  // namespace sf::tcl

@@ -7,6 +7,7 @@
 #include "csv_recorder.hpp"
 #include "output_verbs.hpp"
 #include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/session.hpp"
 
 namespace sf::tcl {
@@ -61,9 +62,36 @@ class ElementRecorder final : public CsvRecorder {
   std::vector<int> ids_;
 };
 
-const OptionSpec kCsvOptions[] = {{"-elements", "IDS", "the elements whose state each row holds"},
-                                  {"-every", "K", "a row every K steps (default 1)"},
-                                  {nullptr, nullptr, nullptr}};
+// What output csv is asked, besides the file; bodies: the scene's, for the
+// check of the ids.
+struct CsvDraft {
+  std::vector<int> ids = {};  // empty: not given
+  int every = 1;
+  const dem::Bodies* bodies = nullptr;
+};
+
+// -elements IDS: each an element of the scene, once.
+bool parseIds(Tcl_Interp* interp, Tcl_Obj* o, CsvDraft& d) {
+  if (!getElementIds(interp, o, d.ids)) return false;
+  std::set<int> seen;
+  for (int id : d.ids) {
+    if (d.bodies->slot(id) < 0)
+      return reject(interp, "LOOKUP ELEMENT", "no element with id " + std::to_string(id));
+    if (!seen.insert(id).second)
+      return reject(interp, "VALUE ELEMENTS",
+                    "-elements names element " + std::to_string(id) + " twice");
+  }
+  return true;
+}
+
+const OptionTable<CsvDraft> kCsvOptions{
+    parsedRow<CsvDraft>({.name = "-elements",
+                         .synopsis = "IDS",
+                         .help = "the elements whose state each row holds",
+                         .defaultText = "none: required"},
+                        parseIds),
+    everyRow("a row every K steps", &CsvDraft::every),
+};
 
 }  // namespace
 
@@ -75,40 +103,18 @@ int OutputCsv(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
   Session& s = sessionOf(data);
   const std::string path = Tcl_GetString(objv[1]);
   if (path.empty()) return fail(interp, "VALUE FILE", "FILE must not be empty");
-  std::vector<int> ids;
-  bool given = false;
-  int every = 1;
-  const dem::Bodies& bodies = s.manager.assembly().bodies();
-  if (!parseOptions(interp, objc, objv, 2, kCsvOptions, [&](int k, Tcl_Obj* o) {
-        if (k == 1) {
-          return getEvery(interp, o, every);
-        }
-        int n = 0;
-        Tcl_Obj** items = nullptr;
-        if (Tcl_ListObjGetElements(interp, o, &n, &items) != TCL_OK) return false;
-        ids.clear();
-        std::set<int> seen;
-        for (int i = 0; i < n; ++i) {
-          int id = 0;
-          if (!getInt(interp, items[i], "-elements", id)) return false;
-          if (bodies.slot(id) < 0)
-            return reject(interp, "LOOKUP ELEMENT", "no element with id " + std::to_string(id));
-          if (!seen.insert(id).second)
-            return reject(interp, "VALUE ELEMENTS",
-                          "-elements names element " + std::to_string(id) + " twice");
-          ids.push_back(id);
-        }
-        if (ids.empty()) return reject(interp, "VALUE ELEMENTS", "-elements is empty");
-        given = true;
-        return true;
-      }))
-    return TCL_ERROR;
-  if (!given) return fail(interp, "VALUE ELEMENTS", "output csv needs -elements IDS");
-  if (startRecorder(s, std::make_unique<ElementRecorder>(path, every, std::move(ids)), objc,
-                    objv) != TCL_OK)
+  CsvDraft draft{.bodies = &s.manager.assembly().bodies()};
+  if (!kCsvOptions.apply(interp, objc, objv, 2, draft)) return TCL_ERROR;
+  if (draft.ids.empty()) return fail(interp, "VALUE ELEMENTS", "output csv needs -elements IDS");
+  if (startRecorder(s, std::make_unique<ElementRecorder>(path, draft.every, std::move(draft.ids)),
+                    objc, objv) != TCL_OK)
     return TCL_ERROR;
   Tcl_SetObjResult(interp, newString(path));
   return TCL_OK;
+}
+
+std::string outputCsvOptions() {
+  return kCsvOptions.help("output csv", {}, CsvDraft{});
 }
 
 }  // namespace sf::tcl

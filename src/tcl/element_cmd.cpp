@@ -236,14 +236,21 @@ int ElementOptions(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const
   return TCL_OK;
 }
 
-int ElementHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
-    return TCL_ERROR;
-  }
-  Tcl_SetObjResult(
-      interp,
-      newString(configureOptions().help(
+}  // namespace
+
+void registerElementCommands(Tcl_Interp* interp, Session* session) {
+  registerShapeCommands(interp, session);
+  makeEnsemble(
+      interp, "::sf::element",
+      {{"configure", ElementConfigure},
+       {"cget", ElementCget},
+       {"info", ElementInfo},
+       {"ids", ElementIds},
+       {"delete", ElementDelete},
+       {"next", ElementNext},
+       {"options", ElementOptions}},
+      session,
+      configureOptions().answers(
           "element",
           {"configure ID ?-option value ...?", "cget ID -option",
            "info ID   -> dict type position angle velocity force torque mass inertia ...",
@@ -252,24 +259,7 @@ int ElementHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[])
            "options ?ID?   -> configure's options (those that apply to element ID) as dicts: "
            "name type unit min max choices default ...",
            "help"},
-          ElementDraft::defaults(ShapeType::disc))));
-  return TCL_OK;
-}
-
-}  // namespace
-
-void registerElementCommands(Tcl_Interp* interp, Session* session) {
-  registerShapeCommands(interp, session);
-  makeEnsemble(interp, "::sf::element",
-               {{"configure", ElementConfigure},
-                {"cget", ElementCget},
-                {"info", ElementInfo},
-                {"ids", ElementIds},
-                {"delete", ElementDelete},
-                {"next", ElementNext},
-                {"options", ElementOptions},
-                {"help", ElementHelp}},
-               session);
+          ElementDraft::defaults(ShapeType::disc), false));
 }
 
 }  // namespace sf::tcl

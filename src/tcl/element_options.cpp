@@ -60,37 +60,35 @@ bool parseVertices(Tcl_Interp* interp, Tcl_Obj* value, ElementDraft& s) {
   return true;
 }
 
-const Row kCenter =
-    vec2Row({"-center", "{x y}", "position of the centroid", {}, "length"}, &ElementDraft::center);
-const Row kRadius =
-    realRow({"-radius", "r", "disc radius", {}, "length", {.min = 0, .minOpen = true}},
-            &ElementDraft::radius);
+const Row kCenter = vec2Row(
+    {.name = "-center", .synopsis = "{x y}", .help = "position of the centroid", .unit = "length"},
+    &ElementDraft::center);
+const Row kRadius = realRow({.name = "-radius",
+                             .synopsis = "r",
+                             .help = "disc radius",
+                             .unit = "length",
+                             .range = {.min = 0, .minOpen = true}},
+                            &ElementDraft::radius);
 const Row kFrom =
-    vec2Row({"-from", "{x y}", "wall start point", {}, "length"}, &ElementDraft::from);
-const Row kTo = vec2Row({"-to", "{x y}", "wall end point", {}, "length"}, &ElementDraft::to);
-const Row kThickness = realRow({"-thickness",
-                                "t",
-                                "a wall's thickness, for its mass when set free",
-                                {},
-                                "length",
-                                {.min = 0, .minOpen = true},
-                                nullptr,
-                                nullptr,
-                                nullptr,
-                                "1/20 of its length"},
+    vec2Row({.name = "-from", .synopsis = "{x y}", .help = "wall start point", .unit = "length"},
+            &ElementDraft::from);
+const Row kTo =
+    vec2Row({.name = "-to", .synopsis = "{x y}", .help = "wall end point", .unit = "length"},
+            &ElementDraft::to);
+const Row kThickness = realRow({.name = "-thickness",
+                                .synopsis = "t",
+                                .help = "a wall's thickness, for its mass when set free",
+                                .unit = "length",
+                                .range = {.min = 0, .minOpen = true},
+                                .defaultText = "1/20 of its length"},
                                &ElementDraft::thickness);
 // A choice among the session's materials: converted and shown by name.
 const Row kMaterial{
-    {"-material",
-     "NAME",
-     "the element's material, by name",
-     ValueKind::choice,
-     "",
-     {},
-     nullptr,
-     nullptr,
-     nullptr,
-     "default"},
+    {.name = "-material",
+     .synopsis = "NAME",
+     .help = "the element's material, by name",
+     .kind = ValueKind::choice,
+     .defaultText = "default"},
     nullptr,
     nullptr,
     [](Tcl_Interp* interp, Tcl_Obj* v, ElementDraft& s) {
@@ -104,94 +102,85 @@ const Row kMaterial{
     [](const ElementDraft& s) {
       return s.material && s.materials ? newString((*s.materials)[*s.material].name) : Tcl_NewObj();
     }};
-const Row kAngle = realRow({"-angle", "rad", "orientation", {}, "rad"}, &ElementDraft::angle);
-const Row kVelocity = vec3Row({"-velocity",
-                               "{vx vy w}",
-                               "velocity and angular velocity (prescribed where held)",
-                               {},
-                               "length/time, rad/time"},
+const Row kAngle =
+    realRow({.name = "-angle", .synopsis = "rad", .help = "orientation", .unit = "rad"},
+            &ElementDraft::angle);
+const Row kVelocity = vec3Row({.name = "-velocity",
+                               .synopsis = "{vx vy w}",
+                               .help = "velocity and angular velocity (prescribed where held)",
+                               .unit = "length/time, rad/time"},
                               &ElementDraft::velocity);
-const Row kFix{{"-fix",
-                "{x y rot}",
-                "degrees of freedom held at their prescribed velocity; {} frees all",
-                ValueKind::flags,
-                "",
-                {},
-                kHoldNames,
-                "degree of freedom"},
-               [](const ElementDraft& s) { return maybe(s.hold, flagsValue); },
-               [](ElementDraft& s, const OptionValue& v) { s.hold = std::uint8_t(v.flags); }};
-const Row kForce =
-    vec3Row({"-force", "{Fx Fy T}", "applied force and torque", {}, "force, force length"},
-            &ElementDraft::force);
-const Row kAcceleration = vec2Row({"-acceleration",
-                                   "{ax ay}",
-                                   "a body acceleration of its own, added to gravity",
-                                   {},
-                                   "length/time^2"},
+const Row kFix{
+    .info = {.name = "-fix",
+             .synopsis = "{x y rot}",
+             .help = "degrees of freedom held at their prescribed velocity; {} frees all",
+             .kind = ValueKind::flags,
+             .choices = kHoldNames,
+             .what = "degree of freedom"},
+    .get = [](const ElementDraft& s) { return maybe(s.hold, flagsValue); },
+    .set = [](ElementDraft& s, const OptionValue& v) { s.hold = std::uint8_t(v.flags); }};
+const Row kForce = vec3Row({.name = "-force",
+                            .synopsis = "{Fx Fy T}",
+                            .help = "applied force and torque",
+                            .unit = "force, force length"},
+                           &ElementDraft::force);
+const Row kAcceleration = vec2Row({.name = "-acceleration",
+                                   .synopsis = "{ax ay}",
+                                   .help = "a body acceleration of its own, added to gravity",
+                                   .unit = "length/time^2"},
                                   &ElementDraft::acceleration);
-const Row kId = integerRow({"-id",
-                            "N",
-                            "the element's id",
-                            {},
-                            "",
-                            {.min = 0},
-                            nullptr,
-                            nullptr,
-                            nullptr,
-                            "the next free one"},
+const Row kId = integerRow({.name = "-id",
+                            .synopsis = "N",
+                            .help = "the element's id",
+                            .range = {.min = 0},
+                            .defaultText = "the next free one"},
                            &ElementDraft::id);
-const Row kVertices{{"-vertices", "{x1 y1 x2 y2 ...}",
-                     "corners of a convex polygon, in either order", ValueKind::custom, "length"},
-                    nullptr,
-                    nullptr,
-                    parseVertices,
-                    [](const ElementDraft&) { return Tcl_NewObj(); }};
+const Row kVertices{.info = {.name = "-vertices",
+                             .synopsis = "{x1 y1 x2 y2 ...}",
+                             .help = "corners of a convex polygon, in either order",
+                             .kind = ValueKind::custom,
+                             .unit = "length"},
+                    .parse = parseVertices,
+                    .show = [](const ElementDraft&) { return Tcl_NewObj(); }};
 // Semi-axes and exponents: their ranges are the kernel's (dem/shape_checks.hpp),
 // checked whole before a shape is made.
-const Row kAxes =
-    vec2Row({"-axes", "{a b}", "semi-axes of the ellipse along its own x and y", {}, "length"},
-            &ElementDraft::axes);
-const Row kSides = integerRow({"-sides",
-                               "N",
-                               "sides of the polygon that approximates the ellipse",
-                               {},
-                               "",
-                               {.min = 3, .max = 10000}},
+const Row kAxes = vec2Row({.name = "-axes",
+                           .synopsis = "{a b}",
+                           .help = "semi-axes of the ellipse along its own x and y",
+                           .unit = "length"},
+                          &ElementDraft::axes);
+const Row kSides = integerRow({.name = "-sides",
+                               .synopsis = "N",
+                               .help = "sides of the polygon that approximates the ellipse",
+                               .range = {.min = 3, .max = 10000}},
                               &ElementDraft::sides);
 // A superquadric's outline samples: the kernel takes no fewer than 8.
 const Row kSamples =
-    integerRow({"-sides",
-                "N",
-                "points that sample the superquadric's outline for contacts",
-                {},
-                "",
-                {.min = 8, .max = 10000},
-                nullptr,
-                nullptr,
-                [](double n) {
-                  return "-sides must be 8 to 10000 for a superquadric, got " + formatNumber(n);
-                }},
+    integerRow({.name = "-sides",
+                .synopsis = "N",
+                .help = "points that sample the superquadric's outline for contacts",
+                .range = {.min = 8, .max = 10000},
+                .outOfRange =
+                    [](double n) {
+                      return "-sides must be 8 to 10000 for a superquadric, got " + formatNumber(n);
+                    }},
                &ElementDraft::sides);
-const Row kStress{{"-stress",
-                   "s",
-                   "a wall becomes a plate holding stress s (load s x length) on what it "
-                   "presses; {} stops",
-                   ValueKind::real,
-                   "force/length",
-                   {},
-                   nullptr,
-                   nullptr,
-                   nullptr,
-                   nullptr,
-                   true},
-                  [](const ElementDraft& s) { return maybe(s.stress, realValue); },
-                  [](ElementDraft& s, const OptionValue& v) {
-                    s.stress = v.empty ? std::numeric_limits<double>::quiet_NaN() : v.real;
-                  }};
-const Row kExponents =
-    vec2Row({"-exponents", "{m n}", "superquadric exponents, 1 to 100: |x/a|^m + |y/b|^n = 1"},
-            &ElementDraft::exponents);
+const Row kStress{
+    .info = {.name = "-stress",
+             .synopsis = "s",
+             .help = "a wall becomes a plate holding stress s (load s x length) on what it "
+                     "presses; {} stops",
+             .unit = "force/length",
+             .orEmpty = true},
+    .get = [](const ElementDraft& s) { return maybe(s.stress, realValue); },
+    .set =
+        [](ElementDraft& s, const OptionValue& v) {
+          s.stress = v.empty ? std::numeric_limits<double>::quiet_NaN() : v.real;
+        }};
+const Row kExponents = vec2Row({.name = "-exponents",
+                                .synopsis = "{m n}",
+                                .help = "superquadric exponents, 1 to 100: |x/a|^m + |y/b|^n = 1"},
+                               &ElementDraft::exponents);
 
 }  // namespace
 

@@ -34,133 +34,116 @@ struct LatticeDraft {
 using Row = Option<LatticeDraft>;
 // In this order: -periodic is applied before -walls.
 const OptionTable<LatticeDraft> kOptions{
-    {Row{{"-origin", "{x0 y0}", "lower-left corner", ValueKind::vec2, "length"},
-         [](const LatticeDraft& s) { return vecValue(s.def.origin); },
-         [](LatticeDraft& s, const OptionValue& v) { s.def.origin = v.vec; }},
-     Row{{"-size",
-          "{Lx Ly}",
-          "width and height, whole numbers of spacings",
-          ValueKind::vec2,
-          "length",
-          {.min = 0, .minOpen = true},
-          nullptr,
-          nullptr,
-          nullptr,
-          ""},
-         [](const LatticeDraft& s) { return vecValue(s.def.size); },
-         [](LatticeDraft& s, const OptionValue& v) { s.def.size = v.vec; }},
-     Row{{"-cells",
-          "NX",
-          "cells across x (or give -spacing)",
-          ValueKind::integer,
-          "",
-          {.min = 1},
-          nullptr,
-          nullptr,
-          nullptr,
-          ""},
-         [](const LatticeDraft& s) { return integerValue(s.nx); },
-         [](LatticeDraft& s, const OptionValue& v) { s.def.cells = v.integer, s.def.spacing = 0; }},
-     Row{{"-spacing",
-          "h",
-          "node spacing (or give -cells)",
-          ValueKind::real,
-          "length",
-          {.min = 0, .minOpen = true},
-          nullptr,
-          nullptr,
-          nullptr,
-          ""},
-         [](const LatticeDraft& s) { return realValue(s.h); },
-         [](LatticeDraft& s, const OptionValue& v) { s.def.spacing = v.real, s.def.cells = 0; }},
-     Row{{"-viscosity",
-          "nu",
-          "kinematic viscosity; with tau it sets the timestep",
-          ValueKind::real,
-          "length^2/time",
-          {.min = 0, .minOpen = true},
-          nullptr,
-          nullptr,
-          nullptr,
-          ""},
-         [](const LatticeDraft& s) { return realValue(s.viscosity); },
-         [](LatticeDraft& s, const OptionValue& v) { s.def.viscosity = v.real; }},
-     Row{{"-density",
-          "rho0",
-          "initial and reference density",
-          ValueKind::real,
-          "mass/length^2",
-          {.min = 0, .minOpen = true}},
-         [](const LatticeDraft& s) { return realValue(s.def.density); },
-         [](LatticeDraft& s, const OptionValue& v) { s.def.density = v.real; }},
-     Row{{"-tau",
-          "tau",
-          "relaxation time (a fixed sim -timestep sets it instead)",
-          ValueKind::real,
-          "",
-          {.min = lb::kTauMin, .minOpen = true},
-          nullptr,
-          nullptr,
-          lb::unstableTau,
-          "1"},
-         [](const LatticeDraft& s) { return realValue(s.tau); },
-         [](LatticeDraft& s, const OptionValue& v) { s.def.tau = v.real; }},
-     Row{{"-periodic", "{x y}", "periodic axes: two booleans, or axis names", ValueKind::custom},
-         nullptr,
-         nullptr,
-         [](Tcl_Interp* interp, Tcl_Obj* v, LatticeDraft& s) {
-           return parsePeriodic(interp, v, s.def);
-         },
-         [](const LatticeDraft& s) {
-           Tcl_Obj* flags[2] = {
-               Tcl_NewBooleanObj(s.def.sides[lb::left].kind == SideKind::periodic),
-               Tcl_NewBooleanObj(s.def.sides[lb::bottom].kind == SideKind::periodic)};
-           return Tcl_NewListObj(2, flags);
-         }},
-     Row{{"-walls", "{side kind ...}",
-          "sides left right bottom top: noslip ?{vx vy}?, slip, periodic, velocity {vx vy}, "
-          "pressure p",
-          ValueKind::custom},
-         nullptr,
-         nullptr,
-         [](Tcl_Interp* interp, Tcl_Obj* v, LatticeDraft& s) {
-           return parseWalls(interp, v, s.def);
-         },
-         [](const LatticeDraft& s) { return wallsValue(s.def); }},
-     Row{{"-forcing", "{Fx Fy}", "body force per unit area (rho a)", ValueKind::vec2,
-          "mass/(length time^2)"},
-         [](const LatticeDraft& s) { return vecValue(s.def.forcing); },
-         [](LatticeDraft& s, const OptionValue& v) { s.def.forcing = v.vec; }},
-     Row{{"-collision",
-          "bgk|trt",
-          "collision operator",
-          ValueKind::choice,
-          "",
-          {},
-          kCollisionNames,
-          "collision"},
-         [](const LatticeDraft& s) { return choiceValue(int(s.def.collision)); },
-         [](LatticeDraft& s, const OptionValue& v) { s.def.collision = lb::Collision(v.choice); }},
-     Row{{"-forcescheme",
-          "nodal|guo",
-          "body-force scheme (nodal: the thesis's)",
-          ValueKind::choice,
-          "",
-          {},
-          kForceSchemeNames,
-          "force scheme"},
-         [](const LatticeDraft& s) { return choiceValue(int(s.def.forceScheme)); },
-         [](LatticeDraft& s, const OptionValue& v) {
-           s.def.forceScheme = lb::ForceScheme(v.choice);
-         }},
-     Row{{"-magic",
-          "Lambda",
-          "TRT magic parameter (0.1875: walls exactly halfway)",
-          ValueKind::real,
-          "",
-          {.min = 0, .minOpen = true}},
-         [](const LatticeDraft& s) { return realValue(s.def.magic); },
-         [](LatticeDraft& s, const OptionValue& v) { s.def.magic = v.real; }}},
+    {Row{.info = {.name = "-origin",
+                  .synopsis = "{x0 y0}",
+                  .help = "lower-left corner",
+                  .kind = ValueKind::vec2,
+                  .unit = "length"},
+         .get = [](const LatticeDraft& s) { return vecValue(s.def.origin); },
+         .set = [](LatticeDraft& s, const OptionValue& v) { s.def.origin = v.vec; }},
+     Row{.info = {.name = "-size",
+                  .synopsis = "{Lx Ly}",
+                  .help = "width and height, whole numbers of spacings",
+                  .kind = ValueKind::vec2,
+                  .unit = "length",
+                  .range = {.min = 0, .minOpen = true},
+                  .defaultText = ""},
+         .get = [](const LatticeDraft& s) { return vecValue(s.def.size); },
+         .set = [](LatticeDraft& s, const OptionValue& v) { s.def.size = v.vec; }},
+     Row{.info = {.name = "-cells",
+                  .synopsis = "NX",
+                  .help = "cells across x (or give -spacing)",
+                  .kind = ValueKind::integer,
+                  .range = {.min = 1},
+                  .defaultText = ""},
+         .get = [](const LatticeDraft& s) { return integerValue(s.nx); },
+         .set = [](LatticeDraft& s,
+                   const OptionValue& v) { s.def.cells = v.integer, s.def.spacing = 0; }},
+     Row{.info = {.name = "-spacing",
+                  .synopsis = "h",
+                  .help = "node spacing (or give -cells)",
+                  .unit = "length",
+                  .range = {.min = 0, .minOpen = true},
+                  .defaultText = ""},
+         .get = [](const LatticeDraft& s) { return realValue(s.h); },
+         .set = [](LatticeDraft& s,
+                   const OptionValue& v) { s.def.spacing = v.real, s.def.cells = 0; }},
+     Row{.info = {.name = "-viscosity",
+                  .synopsis = "nu",
+                  .help = "kinematic viscosity; with tau it sets the timestep",
+                  .unit = "length^2/time",
+                  .range = {.min = 0, .minOpen = true},
+                  .defaultText = ""},
+         .get = [](const LatticeDraft& s) { return realValue(s.viscosity); },
+         .set = [](LatticeDraft& s, const OptionValue& v) { s.def.viscosity = v.real; }},
+     Row{.info = {.name = "-density",
+                  .synopsis = "rho0",
+                  .help = "initial and reference density",
+                  .unit = "mass/length^2",
+                  .range = {.min = 0, .minOpen = true}},
+         .get = [](const LatticeDraft& s) { return realValue(s.def.density); },
+         .set = [](LatticeDraft& s, const OptionValue& v) { s.def.density = v.real; }},
+     Row{.info = {.name = "-tau",
+                  .synopsis = "tau",
+                  .help = "relaxation time (a fixed sim -timestep sets it instead)",
+                  .range = {.min = lb::kTauMin, .minOpen = true},
+                  .outOfRange = lb::unstableTau,
+                  .defaultText = "1"},
+         .get = [](const LatticeDraft& s) { return realValue(s.tau); },
+         .set = [](LatticeDraft& s, const OptionValue& v) { s.def.tau = v.real; }},
+     Row{.info = {.name = "-periodic",
+                  .synopsis = "{x y}",
+                  .help = "periodic axes: two booleans, or axis names",
+                  .kind = ValueKind::custom},
+         .parse = [](Tcl_Interp* interp, Tcl_Obj* v,
+                     LatticeDraft& s) { return parsePeriodic(interp, v, s.def); },
+         .show =
+             [](const LatticeDraft& s) {
+               Tcl_Obj* flags[2] = {
+                   Tcl_NewBooleanObj(s.def.sides[lb::left].kind == SideKind::periodic),
+                   Tcl_NewBooleanObj(s.def.sides[lb::bottom].kind == SideKind::periodic)};
+               return Tcl_NewListObj(2, flags);
+             }},
+     Row{.info = {.name = "-walls",
+                  .synopsis = "{side kind ...}",
+                  .help = "sides left right bottom top: noslip ?{vx vy}?, slip, periodic, "
+                          "velocity {vx vy} ?-profile uniform|parabolic? ?-ramp T?, velocity "
+                          "-expr {EXPR_X EXPR_Y} ?-ramp T?, pressure p, outflow",
+                  .kind = ValueKind::custom},
+         .parse = [](Tcl_Interp* interp, Tcl_Obj* v,
+                     LatticeDraft& s) { return parseWalls(interp, v, s.def); },
+         .show = [](const LatticeDraft& s) { return wallsValue(s.def); }},
+     Row{.info = {.name = "-forcing",
+                  .synopsis = "{Fx Fy}",
+                  .help = "body force per unit area (rho a)",
+                  .kind = ValueKind::vec2,
+                  .unit = "mass/(length time^2)"},
+         .get = [](const LatticeDraft& s) { return vecValue(s.def.forcing); },
+         .set = [](LatticeDraft& s, const OptionValue& v) { s.def.forcing = v.vec; }},
+     Row{.info = {.name = "-collision",
+                  .synopsis = "bgk|trt",
+                  .help = "collision operator",
+                  .kind = ValueKind::choice,
+                  .choices = kCollisionNames,
+                  .what = "collision"},
+         .get = [](const LatticeDraft& s) { return choiceValue(int(s.def.collision)); },
+         .set = [](LatticeDraft& s,
+                   const OptionValue& v) { s.def.collision = lb::Collision(v.choice); }},
+     Row{.info = {.name = "-forcescheme",
+                  .synopsis = "nodal|guo",
+                  .help = "body-force scheme (nodal: the thesis's)",
+                  .kind = ValueKind::choice,
+                  .choices = kForceSchemeNames,
+                  .what = "force scheme"},
+         .get = [](const LatticeDraft& s) { return choiceValue(int(s.def.forceScheme)); },
+         .set = [](LatticeDraft& s,
+                   const OptionValue& v) { s.def.forceScheme = lb::ForceScheme(v.choice); }},
+     Row{.info = {.name = "-magic",
+                  .synopsis = "Lambda",
+                  .help = "TRT magic parameter (0.1875: walls exactly halfway)",
+                  .range = {.min = 0, .minOpen = true}},
+         .get = [](const LatticeDraft& s) { return realValue(s.def.magic); },
+         .set = [](LatticeDraft& s, const OptionValue& v) { s.def.magic = v.real; }}},
     true};
 // The rows whose presence the commands read (the table's own order aside).
 const int kSize = kOptions.index("-size"), kCells = kOptions.index("-cells"),
@@ -174,7 +157,6 @@ const LatticeDraft& defaults() {
     s.tau = 1;
     return s;
   }();
-    evaluateSideExpressions(interp, draft.def, s.manager.time());
   return d;
 }
 
@@ -192,6 +174,7 @@ int LatticeCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
   if (given[kCells] == given[kSpacing])
     return fail(interp, "VALUE CELLS", "lattice create needs exactly one of -cells and -spacing");
   const int code = guarded(interp, [&] {
+    evaluateSideExpressions(interp, draft.def, s.manager.time());
     s.manager.createLattice(def);
     return TCL_OK;
   });
@@ -211,7 +194,6 @@ int LatticeConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
       const int k = optionIndex(interp, objv[1], kOptions.specs());
       if (k < 0) return TCL_ERROR;
       Tcl_SetObjResult(interp, kOptions.get(draft, k));
-    evaluateSideExpressions(interp, def, s.manager.time());
       return TCL_OK;
     }
     if (objc % 2 == 0) {
@@ -229,6 +211,7 @@ int LatticeConfigure(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
       def.viscosity = was.viscosity, def.tau = was.tau, def.timestep = was.timestep;
     if (given[kViscosity] && !given[kTau]) def.tau.reset();
     if (given[kTau]) def.timestep.reset();
+    evaluateSideExpressions(interp, def, s.manager.time());
     s.manager.reconfigureLattice(def);
     return TCL_OK;
   });
@@ -440,17 +423,9 @@ int ObstacleCircle(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const
       &lb::Lattice::addCircle);
 }
 
-bool getObstacleId(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int& id) {
-  if (objc != 2) {
-    Tcl_WrongNumArgs(interp, 1, objv, "ID");
-    return false;
-  }
-  return getInt(interp, objv[1], "ID", id);
-}
-
 int ObstacleDelete(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   int id = 0;
-  if (!getObstacleId(interp, objc, objv, id)) return TCL_ERROR;
+  if (!getSoleId(interp, objc, objv, "ID", id)) return TCL_ERROR;
   return guarded(interp, [&] {
     sessionOf(data).manager.lattice().deleteObstacle(id);
     return TCL_OK;
@@ -459,7 +434,7 @@ int ObstacleDelete(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const
 
 int ObstacleInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   int id = 0;
-  if (!getObstacleId(interp, objc, objv, id)) return TCL_ERROR;
+  if (!getSoleId(interp, objc, objv, "ID", id)) return TCL_ERROR;
   return guarded(interp, [&] {
     const lb::ObstacleInfo o = sessionOf(data).manager.lattice().obstacleInfo(id);
     if (o.circle) {
@@ -504,24 +479,21 @@ int LatticeObstacles(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* con
   });
 }
 
-// The option table, one dict per option (the workbench's property panel).
-int LatticeOptions(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
-    return TCL_ERROR;
-  }
-  Tcl_SetObjResult(interp, kOptions.describe(defaults()));
-  return TCL_OK;
-}
+}  // namespace
 
-int LatticeHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
-    return TCL_ERROR;
-  }
-  Tcl_SetObjResult(interp,
-                   newString(kOptions.help(
-                       "lattice",
+void registerLatticeCommands(Tcl_Interp* interp, Session* session) {
+  makeEnsemble(
+      interp, "::sf::lattice",
+      {{"create", LatticeCreate},
+       {"configure", LatticeConfigure},
+       {"cget", LatticeCget},
+       {"info", LatticeInfo},
+       {"probe", LatticeProbe},
+       {"obstacle", nullptr},
+       {"obstacles", LatticeObstacles},
+       {"delete", LatticeDelete}},
+      session,
+      kOptions.answers("lattice",
                        {"create -size {Lx Ly} (-cells NX | -spacing h) ?-option value ...?",
                         "configure ?-option value ...?", "cget -option",
                         "info                    -> dict nx ny nodes spacing timestep tau ...",
@@ -534,25 +506,7 @@ int LatticeHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[])
                         "options                 -> the options as dicts: name type unit "
                         "min max choices default help ...",
                         "help"},
-                       defaults())));
-  return TCL_OK;
-}
-
-}  // namespace
-
-void registerLatticeCommands(Tcl_Interp* interp, Session* session) {
-  makeEnsemble(interp, "::sf::lattice",
-               {{"create", LatticeCreate},
-                {"configure", LatticeConfigure},
-                {"cget", LatticeCget},
-                {"info", LatticeInfo},
-                {"probe", LatticeProbe},
-                {"obstacle", nullptr},
-                {"obstacles", LatticeObstacles},
-                {"delete", LatticeDelete},
-                {"options", LatticeOptions},
-                {"help", LatticeHelp}},
-               session);
+                       defaults()));
   makeEnsemble(interp, "::sf::lattice::obstacle",
                {{"rect", ObstacleRect},
                 {"circle", ObstacleCircle},

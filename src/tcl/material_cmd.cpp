@@ -27,74 +27,91 @@ Row realRow(OptionInfo info, double Material::*field) {
 }
 
 const OptionTable<Material> kOptions{
-    realRow({"-density", "rho", "mass per unit volume (mass = rho x area, per unit thickness)",
-             ValueKind::real, "mass/length^2", kPositive},
+    realRow({.name = "-density",
+             .synopsis = "rho",
+             .help = "mass per unit volume (mass = rho x area, per unit thickness)",
+             .unit = "mass/length^2",
+             .range = kPositive},
             &Material::density),
-    realRow({"-kn", "k", "normal contact stiffness", ValueKind::real, "force/length", kPositive},
+    realRow({.name = "-kn",
+             .synopsis = "k",
+             .help = "normal contact stiffness",
+             .unit = "force/length",
+             .range = kPositive},
             &Material::kn),
-    realRow(
-        {"-ks", "k", "tangential contact stiffness", ValueKind::real, "force/length", kNonNegative},
-        &Material::ks),
-    realRow({"-friction", "mu", "Coulomb friction coefficient", ValueKind::real, "", kNonNegative},
+    realRow({.name = "-ks",
+             .synopsis = "k",
+             .help = "tangential contact stiffness",
+             .unit = "force/length",
+             .range = kNonNegative},
+            &Material::ks),
+    realRow({.name = "-friction",
+             .synopsis = "mu",
+             .help = "Coulomb friction coefficient",
+             .range = kNonNegative},
             &Material::friction),
-    Row{{"-restitution",
-         "e",
-         "target normal restitution (sets the damping)",
-         ValueKind::real,
-         "",
-         {.min = 0, .max = 1},
-         nullptr,
-         nullptr,
-         restitutionRange},
-        [](const Material& m) { return realValue(m.restitution); },
-        [](Material& m, const OptionValue& v) { m.restitution = v.real, m.damping = -1; }},
+    Row{.info = {.name = "-restitution",
+                 .synopsis = "e",
+                 .help = "target normal restitution (sets the damping)",
+                 .range = {.min = 0, .max = 1},
+                 .outOfRange = restitutionRange},
+        .get = [](const Material& m) { return realValue(m.restitution); },
+        .set = [](Material& m, const OptionValue& v) { m.restitution = v.real, m.damping = -1; }},
     // The kernel keeps "none" as a negative damping, so it cannot refuse one:
     // the range is this layer's. {} (what cget shows then) goes back to it.
-    Row{{"-damping", "c",
-         "fixed normal damping coefficient instead of -restitution; {}: none, -restitution rules",
-         ValueKind::real, "mass/time", kNonNegative, nullptr, nullptr, nullptr, nullptr, true},
-        [](const Material& m) { return m.damping >= 0 ? realValue(m.damping) : emptyValue(); },
-        [](Material& m, const OptionValue& v) { m.damping = v.empty ? -1 : v.real; }},
-    Row{{"-normalforce",
-         "signed|compressive",
-         "signed: the dashpot may pull as a contact opens; compressive: clamped at 0",
-         ValueKind::choice,
-         "",
-         {},
-         dem::normalForceNames,
-         "normalforce"},
-        [](const Material& m) { return choiceValue(int(m.normalForce)); },
-        [](Material& m, const OptionValue& v) { m.normalForce = dem::NormalForce(v.choice); }},
-    realRow({"-bondstiffness", "k", "stiffness of bonds made of this material", ValueKind::real,
-             "force/length", kNonNegative},
+    Row{.info = {.name = "-damping",
+                 .synopsis = "c",
+                 .help = "fixed normal damping coefficient instead of -restitution; {}: none, "
+                         "-restitution rules",
+                 .unit = "mass/time",
+                 .range = kNonNegative,
+                 .orEmpty = true},
+        .get =
+            [](const Material& m) { return m.damping >= 0 ? realValue(m.damping) : emptyValue(); },
+        .set = [](Material& m, const OptionValue& v) { m.damping = v.empty ? -1 : v.real; }},
+    Row{.info = {.name = "-normalforce",
+                 .synopsis = "signed|compressive",
+                 .help =
+                     "signed: the dashpot may pull as a contact opens; compressive: clamped at 0",
+                 .kind = ValueKind::choice,
+                 .choices = dem::normalForceNames,
+                 .what = "normalforce"},
+        .get = [](const Material& m) { return choiceValue(int(m.normalForce)); },
+        .set = [](Material& m,
+                  const OptionValue& v) { m.normalForce = dem::NormalForce(v.choice); }},
+    realRow({.name = "-bondstiffness",
+             .synopsis = "k",
+             .help = "stiffness of bonds made of this material",
+             .unit = "force/length",
+             .range = kNonNegative},
             &Material::bondStiffness),
-    realRow({"-bondstrength", "s", "force at which such bonds break", ValueKind::real, "force",
-             kNonNegative},
+    realRow({.name = "-bondstrength",
+             .synopsis = "s",
+             .help = "force at which such bonds break",
+             .unit = "force",
+             .range = kNonNegative},
             &Material::bondStrength),
-    Row{{"-law",
-         "linear|hertz",
-         "contact law: linear spring-dashpot or Hertz-Mindlin",
-         ValueKind::choice,
-         "",
-         {},
-         dem::contactLawNames,
-         "law"},
-        [](const Material& m) { return choiceValue(int(m.law)); },
-        [](Material& m, const OptionValue& v) { m.law = dem::ContactLaw(v.choice); }},
-    realRow({"-youngs", "E", "Young's modulus (Hertz-Mindlin)", ValueKind::real, "force/length",
-             kPositive},
+    Row{.info = {.name = "-law",
+                 .synopsis = "linear|hertz",
+                 .help = "contact law: linear spring-dashpot or Hertz-Mindlin",
+                 .kind = ValueKind::choice,
+                 .choices = dem::contactLawNames,
+                 .what = "law"},
+        .get = [](const Material& m) { return choiceValue(int(m.law)); },
+        .set = [](Material& m, const OptionValue& v) { m.law = dem::ContactLaw(v.choice); }},
+    realRow({.name = "-youngs",
+             .synopsis = "E",
+             .help = "Young's modulus (Hertz-Mindlin)",
+             .unit = "force/length",
+             .range = kPositive},
             &Material::youngs),
-    Row{{"-poisson",
-         "nu",
-         "Poisson's ratio (Hertz-Mindlin)",
-         ValueKind::real,
-         "",
-         {.min = -1, .max = 0.5, .minOpen = true, .maxOpen = true},
-         nullptr,
-         nullptr,
-         poissonRange},
-        [](const Material& m) { return realValue(m.poisson); },
-        [](Material& m, const OptionValue& v) { m.poisson = v.real; }},
+    Row{.info = {.name = "-poisson",
+                 .synopsis = "nu",
+                 .help = "Poisson's ratio (Hertz-Mindlin)",
+                 .range = {.min = -1, .max = 0.5, .minOpen = true, .maxOpen = true},
+                 .outOfRange = poissonRange},
+        .get = [](const Material& m) { return realValue(m.poisson); },
+        .set = [](Material& m, const OptionValue& v) { m.poisson = v.real; }},
 };
 
 // A new material's settings, for help's and `material options`' defaults.
@@ -180,33 +197,6 @@ int MaterialNames(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const 
   return TCL_OK;
 }
 
-// The option table, one dict per option (the workbench's property panel
-// builds its fields from it).
-int MaterialOptions(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
-    return TCL_ERROR;
-  }
-  Tcl_SetObjResult(interp, kOptions.describe(defaults()));
-  return TCL_OK;
-}
-
-int MaterialHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
-    return TCL_ERROR;
-  }
-  Tcl_SetObjResult(interp, newString(kOptions.help(
-                               "material",
-                               {"create NAME ?-option value ...?",
-                                "configure NAME ?-option value ...?", "cget NAME -option", "names",
-                                "options   -> the options as dicts: name type unit min "
-                                "max choices default ...",
-                                "help"},
-                               defaults())));
-  return TCL_OK;
-}
-
 }  // namespace
 
 void registerMaterialCommands(Tcl_Interp* interp, Session* session) {
@@ -214,10 +204,15 @@ void registerMaterialCommands(Tcl_Interp* interp, Session* session) {
                {{"create", MaterialCreate},
                 {"configure", MaterialConfigure},
                 {"cget", MaterialCget},
-                {"names", MaterialNames},
-                {"options", MaterialOptions},
-                {"help", MaterialHelp}},
-               session);
+                {"names", MaterialNames}},
+               session,
+               kOptions.answers("material",
+                                {"create NAME ?-option value ...?",
+                                 "configure NAME ?-option value ...?", "cget NAME -option", "names",
+                                 "options   -> the options as dicts: name type unit min "
+                                 "max choices default ...",
+                                 "help"},
+                                defaults()));
 }
 
 }  // namespace sf::tcl

@@ -1,6 +1,7 @@
 // output movie FILE ?-every K? ?-fps n? ?view options?: frames piped to ffmpeg
 // while runs go on. The movie is written under a temporary name and appears
 // whole, under its own name, when the recorder is closed.
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "sandflow/io/find_program.hpp"
 #include "sandflow/render/scene_builder.hpp"
 #include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/picture.hpp"
 #include "sandflow/tcl/session.hpp"
 
@@ -45,9 +47,18 @@ class MovieRecorder final : public Recorder {
   std::unique_ptr<io::FfmpegPipe> pipe_;
 };
 
-const OptionSpec kMovieOptions[] = {{"-every", "K", "a frame every K steps (default 1)"},
-                                    {"-fps", "n", "frames per second of the movie (default 25)"},
-                                    {nullptr, nullptr, nullptr}};
+// What output movie is asked besides the file and the view options.
+struct MovieDraft {
+  int every = 1, fps = 25;
+};
+const OptionTable<MovieDraft> kMovieOptions{
+    everyRow("a frame every K steps", &MovieDraft::every),
+    memberRow({.name = "-fps",
+               .synopsis = "n",
+               .help = "frames per second of the movie",
+               .range = {.min = 1, .max = 240}},
+              &MovieDraft::fps),
+};
 
 }  // namespace
 
@@ -61,25 +72,18 @@ int OutputMovie(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
   if (!io::isMovieFile(path))
     return fail(interp, "VALUE FILE",
                 "output movie writes .mp4, .mkv, .mov, .avi or .webm files, got \"" + path + "\"");
-  // -every and -fps first, then the view options (which default to view configure's).
-  int every = 1, fps = 25;
-  std::vector<Tcl_Obj*> viewArgs(objv, objv + 2);
+  // The movie's own options first, then the view options (which default to
+  // view configure's).
+  std::vector<Tcl_Obj*> movieArgs(objv, objv + 2), viewArgs(objv, objv + 2);
   for (int i = 2; i < objc; i += 2) {
-    const std::string name = Tcl_GetString(objv[i]);
-    if (name != "-every" && name != "-fps") {
-      viewArgs.push_back(objv[i]);
-      if (i + 1 < objc) viewArgs.push_back(objv[i + 1]);
-      continue;
-    }
-    if (i + 1 >= objc) return fail(interp, "VALUE MISSING", "value for \"" + name + "\" missing");
-    if (name == "-every") {
-      if (!getEvery(interp, objv[i + 1], every)) return TCL_ERROR;
-      continue;
-    }
-    if (!getInt(interp, objv[i + 1], "-fps", fps)) return TCL_ERROR;
-    if (fps < 1 || fps > 240)
-      return fail(interp, "VALUE FPS", "-fps must be 1 to 240, got " + std::to_string(fps));
+    std::vector<Tcl_Obj*>& args =
+        kMovieOptions.find(Tcl_GetString(objv[i])) >= 0 ? movieArgs : viewArgs;
+    args.insert(args.end(), objv + i, objv + std::min(i + 2, objc));
   }
+  MovieDraft draft;
+  if (!kMovieOptions.apply(interp, int(movieArgs.size()), movieArgs.data(), 2, draft))
+    return TCL_ERROR;
+  const int every = draft.every, fps = draft.fps;
   render::ViewOptions view = s.view;
   if (!parseViewOptions(interp, int(viewArgs.size()), viewArgs.data(), 2, view, nullptr))
     return TCL_ERROR;
@@ -100,6 +104,10 @@ int OutputMovie(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
   if (startRecorder(s, std::move(movie), objc, objv) != TCL_OK) return TCL_ERROR;
   Tcl_SetObjResult(interp, newString(path));
   return TCL_OK;
+}
+
+std::string outputMovieOptions() {
+  return kMovieOptions.help("output movie", {}, MovieDraft{});
 }
 
 }  // namespace sf::tcl

@@ -2,6 +2,8 @@
 // The verbs of the "output" ensemble that live in files of their own.
 #include <tcl.h>
 
+#include <string>
+
 namespace sf::tcl {
 
 // output vtk PREFIX ?-every K?
@@ -10,5 +12,9 @@ int OutputVtk(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
 int OutputCsv(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]);
 // output movie FILE ?-every K? ?-fps n? ?view options?
 int OutputMovie(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]);
+// Their options, for output help: "options:" and a line each, from their tables.
+std::string outputVtkOptions();
+std::string outputCsvOptions();
+std::string outputMovieOptions();
 
 }  // namespace sf::tcl

@@ -13,80 +13,16 @@
 #include "sandflow/io/find_program.hpp"
 #include "sandflow/io/gnuplot.hpp"
 #include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/session.hpp"
 
 namespace sf::tcl {
 namespace {
 
-enum Opt {
-  oX,
-  oY,
-  oY2,
-  oSeries,
-  oReference,
-  oTitle,
-  oXlabel,
-  oYlabel,
-  oY2label,
-  oLogx,
-  oLogy,
-  oXreverse,
-  oXrange,
-  oYrange,
-  oKey,
-  oSize,
-  oStyle
-};
-
-const OptionSpec kPlotOptions[] = {
-    {"-x", "COL", "column of the horizontal axis (default time if there is one, else the first)"},
-    {"-y", "COLS",
-     "columns to plot (default all but step, the -x and the -y2 columns; none with -series)"},
-    {"-y2", "COLS", "columns to plot against a second vertical axis, on the right"},
-    {"-series", "{YCOL ?-option value ...?}",
-     "one more series, from this file or another (repeatable; -file -x -title -style -dash "
-     "-axis -color -mark -marksize)"},
-    {"-reference", "{constant C | power C X0 P ?-option value ...?}",
-     "a reference line, C or C (x/X0)^P (repeatable; -title -dash -axis)"},
-    {"-title", "S", "title above the plot (default none)"},
-    {"-xlabel", "S", "label of the horizontal axis (default the -x column)"},
-    {"-ylabel", "S", "label of the vertical axis (default the column, when there is one)"},
-    {"-y2label", "S", "label of the right axis (default the column, when there is one)"},
-    {"-logx", "0|1", "logarithmic horizontal axis (all its values must be > 0)"},
-    {"-logy", "0|1", "logarithmic vertical axis (all plotted values must be > 0)"},
-    {"-xreverse", "0|1", "horizontal axis from right to left"},
-    {"-xrange", "{LO HI}", "range of the horizontal axis, * for automatic (default {* *})"},
-    {"-yrange", "{LO HI}", "range of the vertical axis, * for automatic (default {* *})"},
-    {"-key", "topleft|topright|bottomleft|bottomright|off|outside",
-     "where the key goes, boxed (default top right, none for a single series; outside: right "
-     "of the plot)"},
-    {"-size", "{W H}", "image size in pixels (default {640 480})"},
-    {"-style", "lines|points|linespoints", "how each column is drawn (default lines)"},
-    {nullptr, nullptr, nullptr}};
-
-// Options of one -series value, after its column.
-enum SeriesOpt { sFile, sX, sTitle, sStyle, sDash, sAxis, sColor, sMark, sMarksize };
-const OptionSpec kSeriesOptions[] = {
-    {"-file", "CSVFILE", "the CSV file it comes from (default the plot's CSVFILE)"},
-    {"-x", "COL", "its horizontal column (default the one named like the plot's -x column)"},
-    {"-title", "S", "its title in the key (default the column)"},
-    {"-style", "lines|points|linespoints", "how it is drawn (default the plot's -style)"},
-    {"-dash", "solid|dashed|dotted|dashdot", "its line (default solid)"},
-    {"-axis", "y|y2", "the vertical axis it is plotted against (default y)"},
-    {"-color", "red|green|blue|orange|grey|black|purple|brown|cyan",
-     "its colour (default the next of gnuplot's)"},
-    {"-mark", "circle|square|triangle|downtriangle|diamond|open...|cross",
-     "its mark when drawn with points (default the next: filled, then open)"},
-    {"-marksize", "S", "its mark's size, 0 < S <= 10 (default 1.2 up to 50 rows, else 0.6)"},
-    {nullptr, nullptr, nullptr}};
-
-// Options of one -reference value, after its numbers.
-enum ReferenceOpt { rTitle, rDash, rAxis };
-const OptionSpec kReferenceOptions[] = {
-    {"-title", "S", "its title in the key (default its formula)"},
-    {"-dash", "solid|dashed|dotted|dashdot", "its line (default dashed)"},
-    {"-axis", "y|y2", "the vertical axis it is drawn against (default y)"},
-    {nullptr, nullptr, nullptr}};
+using SeriesSpec = io::PlotSeriesSpec;
+using ReferenceSpec = io::PlotReference;
+using AxisRange = io::PlotRange;
+using PlotOptions = io::PlotOptions;
 
 constexpr const char* kStyles[] = {"lines", "points", "linespoints", nullptr};
 constexpr const char* kDashes[] = {"solid", "dashed", "dotted", "dashdot", nullptr};
@@ -98,10 +34,11 @@ constexpr const char* kReferenceForms[] = {"constant C", "power C X0 P"};
 constexpr int kReferenceNumbers[] = {1, 3};
 constexpr int kMaxPixels = 20000;
 
-using SeriesSpec = io::PlotSeriesSpec;
-using ReferenceSpec = io::PlotReference;
-using Range = io::PlotRange;
-using PlotOptions = io::PlotOptions;
+// The option tables: the plot's, and those of one -series and one -reference
+// value (after its column or numbers). Defined below the parsers they use.
+const OptionTable<SeriesSpec>& seriesOptions();
+const OptionTable<ReferenceSpec>& referenceOptions();
+const OptionTable<PlotOptions>& plotOptions();
 
 bool getColumns(Tcl_Interp* interp, Tcl_Obj* v, const char* option,
                 std::optional<std::vector<std::string>>& out) {
@@ -124,48 +61,7 @@ bool parseSeries(Tcl_Interp* interp, Tcl_Obj* v, SeriesSpec& spec) {
                   "-series must be {YCOL ?-option value ...?}, got \"" +
                       std::string(Tcl_GetString(v)) + "\"");
   spec.y = Tcl_GetString(items[0]);
-  return parseOptions(interp, n, items, 1, kSeriesOptions, [&](int k, Tcl_Obj* value) {
-    int index = 0;
-    switch (k) {
-      case sFile:
-        spec.file = Tcl_GetString(value);
-        if (spec.file->empty()) return reject(interp, "VALUE FILE", "-file must not be empty");
-        return true;
-      case sX:
-        spec.x = Tcl_GetString(value);
-        return true;
-      case sTitle:
-        spec.title = Tcl_GetString(value);
-        return true;
-      case sStyle:
-        if (!getChoice(interp, value, "style", kStyles, index)) return false;
-        spec.style = index;
-        return true;
-      case sDash:
-        return getChoice(interp, value, "dash", kDashes, spec.dash);
-      case sAxis:
-        return getChoice(interp, value, "axis", kAxes, spec.axis);
-      case sColor:
-        if (!getChoice(interp, value, "color", io::kPlotColors, index)) return false;
-        spec.color = index;
-        return true;
-      case sMark:
-        if (!getChoice(interp, value, "mark", io::kPlotMarks, index)) return false;
-        spec.mark = index;
-        return true;
-      case sMarksize: {
-        double size = 0;
-        if (!getDouble(interp, value, "-marksize", size)) return false;
-        if (!(size > 0 && size <= 10))
-          return reject(interp, "VALUE MARKSIZE",
-                        "-marksize must be > 0 and at most 10, got \"" +
-                            std::string(Tcl_GetString(value)) + "\"");
-        spec.marksize = size;
-        return true;
-      }
-    }
-    return false;
-  });
+  return seriesOptions().apply(interp, n, items, 1, spec);
 }
 
 // -reference {constant C ?-option value ...?} or {power C X0 P ?-option value ...?}
@@ -189,29 +85,18 @@ bool parseReference(Tcl_Interp* interp, Tcl_Obj* v, ReferenceSpec& spec) {
     return reject(interp, "VALUE REFERENCE",
                   "-reference " + std::string(kReferenceForms[1]) + " needs X0 > 0, got \"" +
                       spec.text + "\"");
-  return parseOptions(interp, n, items, 1 + numbers, kReferenceOptions, [&](int k, Tcl_Obj* value) {
-    switch (k) {
-      case rTitle:
-        spec.title = Tcl_GetString(value);
-        return true;
-      case rDash:
-        return getChoice(interp, value, "dash", kDashes, spec.dash);
-      case rAxis:
-        return getChoice(interp, value, "axis", kAxes, spec.axis);
-    }
-    return false;
-  });
+  return referenceOptions().apply(interp, n, items, 1 + numbers, spec);
 }
 
 // -xrange / -yrange {LO HI}: numbers or *, LO below HI.
-bool parseRange(Tcl_Interp* interp, Tcl_Obj* v, const char* option, Range& range) {
+bool parseRange(Tcl_Interp* interp, Tcl_Obj* v, const char* option, AxisRange& range) {
   int n = 0;
   Tcl_Obj** items = nullptr;
   const std::string bad = std::string(option) + " must be {LO HI}, each a number or *, got \"" +
                           Tcl_GetString(v) + "\"";
   if (Tcl_ListObjGetElements(nullptr, v, &n, &items) != TCL_OK || n != 2)
     return reject(interp, "VALUE RANGE", bad);
-  Range r;
+  AxisRange r;
   for (int i = 0; i < 2; ++i) {
     if (std::strcmp(Tcl_GetString(items[i]), "*") == 0) continue;
     double b = 0;
@@ -226,69 +111,224 @@ bool parseRange(Tcl_Interp* interp, Tcl_Obj* v, const char* option, Range& range
   return true;
 }
 
-bool parsePlotOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], PlotOptions& o) {
-  return parseOptions(interp, objc, objv, 3, kPlotOptions, [&](int k, Tcl_Obj* v) {
-    switch (k) {
-      case oX:
-        o.x = Tcl_GetString(v);
-        return true;
-      case oTitle:
-        o.title = Tcl_GetString(v);
-        return true;
-      case oXlabel:
-        o.xlabel = Tcl_GetString(v);
-        return true;
-      case oYlabel:
-        o.ylabel = Tcl_GetString(v);
-        return true;
-      case oY2label:
-        o.y2label = Tcl_GetString(v);
-        return true;
-      case oLogx:
-        return getBool(interp, v, "-logx", o.logx);
-      case oLogy:
-        return getBool(interp, v, "-logy", o.logy);
-      case oXreverse:
-        return getBool(interp, v, "-xreverse", o.xreverse);
-      case oStyle:
-        return getChoice(interp, v, "style", kStyles, o.style);
-      case oY:
-        return getColumns(interp, v, "-y", o.y);
-      case oY2:
-        return getColumns(interp, v, "-y2", o.y2);
-      case oSeries:
-        return parseSeries(interp, v, o.series.emplace_back());
-      case oReference:
-        return parseReference(interp, v, o.references.emplace_back());
-      case oXrange:
-        return parseRange(interp, v, "-xrange", o.xrange);
-      case oYrange:
-        return parseRange(interp, v, "-yrange", o.yrange);
-      case oKey: {
-        int index = 0;
-        if (!getChoice(interp, v, "key", kKeys, index)) return false;
-        o.key = index;
-        return true;
-      }
-      case oSize: {
-        int n = 0;
-        Tcl_Obj** items = nullptr;
-        if (Tcl_ListObjGetElements(interp, v, &n, &items) != TCL_OK) return false;
-        const std::string bad =
-            std::string("-size must be {W H} with whole numbers of pixels 1 to ") +
-            std::to_string(kMaxPixels) + ", got \"" + Tcl_GetString(v) + "\"";
-        if (n != 2) return reject(interp, "VALUE SIZE", bad);
-        int w = 0, h = 0;
-        if (!getInt(interp, items[0], "-size", w) || !getInt(interp, items[1], "-size", h))
-          return false;
-        if (w < 1 || h < 1 || w > kMaxPixels || h > kMaxPixels)
-          return reject(interp, "VALUE SIZE", bad);
-        o.width = w, o.height = h;
-        return true;
-      }
-    }
-    return false;
-  });
+// A choice row over an int, or an optional<int> shown as {} until given.
+template <class Draft, class Index>
+Option<Draft> choiceRow(OptionInfo info, Index Draft::*member) {
+  info.kind = ValueKind::choice;
+  return {.info = info,
+          .get =
+              [member](const Draft& d) {
+                if constexpr (std::is_same_v<Index, int>)
+                  return choiceValue(d.*member);
+                else
+                  return d.*member ? choiceValue(*(d.*member)) : emptyValue();
+              },
+          .set = [member](Draft& d, const OptionValue& v) { d.*member = v.choice; }};
+}
+
+std::string markSizeRange(double size) {
+  return "-marksize must be > 0 and at most 10, got \"" + formatNumber(size) + "\"";
+}
+
+const OptionTable<SeriesSpec>& seriesOptions() {
+  static const OptionTable<SeriesSpec> table{
+      parsedRow<SeriesSpec>({.name = "-file",
+                             .synopsis = "CSVFILE",
+                             .help = "the CSV file it comes from",
+                             .defaultText = "the plot's CSVFILE"},
+                            [](Tcl_Interp* interp, Tcl_Obj* v, SeriesSpec& spec) {
+                              spec.file = Tcl_GetString(v);
+                              return !spec.file->empty() ||
+                                     reject(interp, "VALUE FILE", "-file must not be empty");
+                            }),
+      memberRow({.name = "-x",
+                 .synopsis = "COL",
+                 .help = "its horizontal column",
+                 .defaultText = "the one named like the plot's -x column"},
+                &SeriesSpec::x),
+      memberRow({.name = "-title",
+                 .synopsis = "S",
+                 .help = "its title in the key",
+                 .defaultText = "the column"},
+                &SeriesSpec::title),
+      choiceRow({.name = "-style",
+                 .synopsis = "lines|points|linespoints",
+                 .help = "how it is drawn",
+                 .choices = kStyles,
+                 .defaultText = "the plot's -style"},
+                &SeriesSpec::style),
+      choiceRow({.name = "-dash",
+                 .synopsis = "solid|dashed|dotted|dashdot",
+                 .help = "its line",
+                 .choices = kDashes},
+                &SeriesSpec::dash),
+      choiceRow({.name = "-axis",
+                 .synopsis = "y|y2",
+                 .help = "the vertical axis it is plotted against",
+                 .choices = kAxes},
+                &SeriesSpec::axis),
+      choiceRow({.name = "-color",
+                 .synopsis = "red|green|blue|orange|grey|black|purple|brown|cyan",
+                 .help = "its colour",
+                 .choices = io::kPlotColors,
+                 .defaultText = "the next of gnuplot's"},
+                &SeriesSpec::color),
+      choiceRow({.name = "-mark",
+                 .synopsis = "circle|square|triangle|downtriangle|diamond|open...|cross",
+                 .help = "its mark when drawn with points",
+                 .choices = io::kPlotMarks,
+                 .defaultText = "the next: filled, then open"},
+                &SeriesSpec::mark),
+      Option<SeriesSpec>{.info = {.name = "-marksize",
+                                  .synopsis = "S",
+                                  .help = "its mark's size, 0 < S <= 10",
+                                  .range = {.min = 0, .max = 10, .minOpen = true},
+                                  .outOfRange = markSizeRange,
+                                  .defaultText = "1.2 up to 50 rows, else 0.6"},
+                         .get =
+                             [](const SeriesSpec& d) {
+                               return d.marksize ? realValue(*d.marksize) : emptyValue();
+                             },
+                         .set = [](SeriesSpec& d, const OptionValue& v) { d.marksize = v.real; }},
+  };
+  return table;
+}
+
+const OptionTable<ReferenceSpec>& referenceOptions() {
+  static const OptionTable<ReferenceSpec> table{
+      memberRow({.name = "-title",
+                 .synopsis = "S",
+                 .help = "its title in the key",
+                 .defaultText = "its formula"},
+                &ReferenceSpec::title),
+      choiceRow({.name = "-dash",
+                 .synopsis = "solid|dashed|dotted|dashdot",
+                 .help = "its line",
+                 .choices = kDashes},
+                &ReferenceSpec::dash),
+      choiceRow({.name = "-axis",
+                 .synopsis = "y|y2",
+                 .help = "the vertical axis it is drawn against",
+                 .choices = kAxes},
+                &ReferenceSpec::axis),
+  };
+  return table;
+}
+
+// -size {W H}: whole numbers of pixels, 1 to kMaxPixels each.
+bool parseSize(Tcl_Interp* interp, Tcl_Obj* v, PlotOptions& o) {
+  int n = 0;
+  Tcl_Obj** items = nullptr;
+  if (Tcl_ListObjGetElements(interp, v, &n, &items) != TCL_OK) return false;
+  const std::string bad = std::string("-size must be {W H} with whole numbers of pixels 1 to ") +
+                          std::to_string(kMaxPixels) + ", got \"" + Tcl_GetString(v) + "\"";
+  if (n != 2) return reject(interp, "VALUE SIZE", bad);
+  int w = 0, h = 0;
+  if (!getInt(interp, items[0], "-size", w) || !getInt(interp, items[1], "-size", h)) return false;
+  if (w < 1 || h < 1 || w > kMaxPixels || h > kMaxPixels) return reject(interp, "VALUE SIZE", bad);
+  o.width = w, o.height = h;
+  return true;
+}
+
+template <std::optional<std::vector<std::string>> PlotOptions::*member>
+bool parseColumns(Tcl_Interp* interp, Tcl_Obj* v, PlotOptions& o) {
+  return getColumns(interp, v, member == &PlotOptions::y ? "-y" : "-y2", o.*member);
+}
+
+template <AxisRange PlotOptions::*member>
+bool parseAxisRange(Tcl_Interp* interp, Tcl_Obj* v, PlotOptions& o) {
+  return parseRange(interp, v, member == &PlotOptions::xrange ? "-xrange" : "-yrange", o.*member);
+}
+
+const OptionTable<PlotOptions>& plotOptions() {
+  static const OptionTable<PlotOptions> table{
+      memberRow({.name = "-x",
+                 .synopsis = "COL",
+                 .help = "column of the horizontal axis",
+                 .defaultText = "time if there is one, else the first"},
+                &PlotOptions::x),
+      parsedRow<PlotOptions>(
+          {.name = "-y",
+           .synopsis = "COLS",
+           .help = "columns to plot",
+           .defaultText = "all but step, the -x and the -y2 columns; none with -series"},
+          parseColumns<&PlotOptions::y>),
+      parsedRow<PlotOptions>(
+          {.name = "-y2",
+           .synopsis = "COLS",
+           .help = "columns to plot against a second vertical axis, on the right"},
+          parseColumns<&PlotOptions::y2>),
+      parsedRow<PlotOptions>(
+          {.name = "-series",
+           .synopsis = "{YCOL ?-option value ...?}",
+           .help = "one more series, from this file or another (repeatable; -file -x "
+                   "-title -style -dash -axis -color -mark -marksize)"},
+          [](Tcl_Interp* interp, Tcl_Obj* v, PlotOptions& o) {
+            return parseSeries(interp, v, o.series.emplace_back());
+          }),
+      parsedRow<PlotOptions>(
+          {.name = "-reference",
+           .synopsis = "{constant C | power C X0 P ?-option value ...?}",
+           .help = "a reference line, C or C (x/X0)^P (repeatable; -title -dash -axis)"},
+          [](Tcl_Interp* interp, Tcl_Obj* v, PlotOptions& o) {
+            return parseReference(interp, v, o.references.emplace_back());
+          }),
+      memberRow({.name = "-title", .synopsis = "S", .help = "title above the plot"},
+                &PlotOptions::title),
+      memberRow({.name = "-xlabel",
+                 .synopsis = "S",
+                 .help = "label of the horizontal axis",
+                 .defaultText = "the -x column"},
+                &PlotOptions::xlabel),
+      memberRow({.name = "-ylabel",
+                 .synopsis = "S",
+                 .help = "label of the vertical axis",
+                 .defaultText = "the column, when there is one"},
+                &PlotOptions::ylabel),
+      memberRow({.name = "-y2label",
+                 .synopsis = "S",
+                 .help = "label of the right axis",
+                 .defaultText = "the column, when there is one"},
+                &PlotOptions::y2label),
+      memberRow({.name = "-logx",
+                 .synopsis = "0|1",
+                 .help = "logarithmic horizontal axis (all its values must be > 0)"},
+                &PlotOptions::logx),
+      memberRow({.name = "-logy",
+                 .synopsis = "0|1",
+                 .help = "logarithmic vertical axis (all plotted values must be > 0)"},
+                &PlotOptions::logy),
+      memberRow(
+          {.name = "-xreverse", .synopsis = "0|1", .help = "horizontal axis from right to left"},
+          &PlotOptions::xreverse),
+      parsedRow<PlotOptions>({.name = "-xrange",
+                              .synopsis = "{LO HI}",
+                              .help = "range of the horizontal axis, * for automatic",
+                              .defaultText = "{* *}"},
+                             parseAxisRange<&PlotOptions::xrange>),
+      parsedRow<PlotOptions>({.name = "-yrange",
+                              .synopsis = "{LO HI}",
+                              .help = "range of the vertical axis, * for automatic",
+                              .defaultText = "{* *}"},
+                             parseAxisRange<&PlotOptions::yrange>),
+      choiceRow({.name = "-key",
+                 .synopsis = "topleft|topright|bottomleft|bottomright|off|outside",
+                 .help = "where the key goes, boxed",
+                 .choices = kKeys,
+                 .defaultText = "top right, none for a single series; outside: right of the plot"},
+                &PlotOptions::key),
+      parsedRow<PlotOptions>({.name = "-size",
+                              .synopsis = "{W H}",
+                              .help = "image size in pixels",
+                              .defaultText = "{640 480}"},
+                             parseSize),
+      choiceRow({.name = "-style",
+                 .synopsis = "lines|points|linespoints",
+                 .help = "how each column is drawn",
+                 .choices = kStyles},
+                &PlotOptions::style),
+  };
+  return table;
 }
 
 // What a log axis refuses before any file is read: a range or a reference
@@ -296,7 +336,7 @@ bool parsePlotOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], PlotO
 int checkLogAxes(Tcl_Interp* interp, const PlotOptions& o) {
   const struct {
     bool log;
-    const Range& range;
+    const AxisRange& range;
     const char *name, *option;
   } axes[] = {{o.logx, o.xrange, "-logx", "-xrange"}, {o.logy, o.yrange, "-logy", "-yrange"}};
   for (const auto& a : axes) {
@@ -317,9 +357,9 @@ int checkLogAxes(Tcl_Interp* interp, const PlotOptions& o) {
 }
 
 int Plot(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (answerHelp(interp, objc, objv, "plot", {"OUT.png CSVFILE ?-option value ...?   -> OUT.png"},
-                 kPlotOptions))
-    return TCL_OK;
+  static const std::string help = plotOptions().help(
+      "plot", {"OUT.png CSVFILE ?-option value ...?   -> OUT.png", "help"}, PlotOptions{});
+  if (answerHelp(interp, objc, objv, help)) return TCL_OK;
   if (objc < 3) {
     Tcl_WrongNumArgs(interp, 1, objv, "OUT.png CSVFILE ?-option value ...?");
     return TCL_ERROR;
@@ -328,7 +368,7 @@ int Plot(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   const std::string path = Tcl_GetString(objv[2]);
   if (out.empty()) return fail(interp, "VALUE FILE", "OUT.png must not be empty");
   PlotOptions o;
-  if (!parsePlotOptions(interp, objc, objv, o)) return TCL_ERROR;
+  if (!plotOptions().apply(interp, objc, objv, 3, o)) return TCL_ERROR;
   if (checkLogAxes(interp, o) != TCL_OK) return TCL_ERROR;
   const std::string program = io::findProgram("gnuplot");
   if (program.empty())

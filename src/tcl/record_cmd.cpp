@@ -6,6 +6,7 @@
 
 #include "csv_recorder.hpp"
 #include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/session.hpp"
 
 namespace sf::tcl {
@@ -107,17 +108,49 @@ class SceneRecorder final : public CsvRecorder {
   std::vector<int> quantities_;
 };
 
-const OptionSpec kRecordOptions[] = {
-    {"-every", "K", "a row every K steps (default 1)"},
-    {"-quantities", "LIST",
-     "columns after step,time: kinetic elements contacts bonds broken fluidmass fluidpx fluidpy "
-     "mach fluidfx fluidfy (default: all that apply to the scene)"},
-    {nullptr, nullptr, nullptr}};
+// What record is asked, besides the file; hasLattice is the scene's, for
+// the check of the fluid's quantities.
+struct RecordDraft {
+  int every = 1;
+  std::vector<int> quantities = {};  // empty: all that apply to the scene
+  bool hasLattice = false;
+};
+
+bool parseQuantities(Tcl_Interp* interp, Tcl_Obj* o, RecordDraft& d) {
+  int n = 0;
+  Tcl_Obj** items = nullptr;
+  if (Tcl_ListObjGetElements(interp, o, &n, &items) != TCL_OK) return false;
+  d.quantities.clear();
+  std::set<int> seen;
+  for (int i = 0; i < n; ++i) {
+    int q = 0;
+    if (!getChoice(interp, items[i], "quantity", kQuantityNames, q)) return false;
+    if (needsLattice(q) && !d.hasLattice)
+      return reject(interp, "LOOKUP LATTICE", needsLatticeMessage(q));
+    if (!seen.insert(q).second)
+      return reject(interp, "VALUE QUANTITIES",
+                    std::string("-quantities names \"") + kQuantityNames[q] + "\" twice");
+    d.quantities.push_back(q);
+  }
+  if (d.quantities.empty()) return reject(interp, "VALUE QUANTITIES", "-quantities is empty");
+  return true;
+}
+
+const OptionTable<RecordDraft> kRecordOptions{
+    everyRow("a row every K steps", &RecordDraft::every),
+    parsedRow<RecordDraft>(
+        {.name = "-quantities",
+         .synopsis = "LIST",
+         .help = "columns after step,time: kinetic elements contacts bonds broken "
+                 "fluidmass fluidpx fluidpy mach fluidfx fluidfy",
+         .defaultText = "all that apply to the scene"},
+        parseQuantities),
+};
 
 int Record(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (answerHelp(interp, objc, objv, "record", {"FILE ?-every K? ?-quantities LIST?   -> FILE"},
-                 kRecordOptions))
-    return TCL_OK;
+  static const std::string help = kRecordOptions.help(
+      "record", {"FILE ?-every K? ?-quantities LIST?   -> FILE", "help"}, RecordDraft{});
+  if (answerHelp(interp, objc, objv, help)) return TCL_OK;
   if (objc < 2) {
     Tcl_WrongNumArgs(interp, 1, objv, "FILE ?-every K? ?-quantities LIST?");
     return TCL_ERROR;
@@ -125,38 +158,14 @@ int Record(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[])
   Session& s = sessionOf(data);
   const std::string path = Tcl_GetString(objv[1]);
   if (path.empty()) return fail(interp, "VALUE FILE", "FILE must not be empty");
-  int every = 1;
-  std::vector<int> quantities;
-  bool chosen = false;
-  if (!parseOptions(interp, objc, objv, 2, kRecordOptions, [&](int k, Tcl_Obj* o) {
-        if (k == 0) {
-          return getEvery(interp, o, every);
-        }
-        int n = 0;
-        Tcl_Obj** items = nullptr;
-        if (Tcl_ListObjGetElements(interp, o, &n, &items) != TCL_OK) return false;
-        quantities.clear();
-        std::set<int> seen;
-        for (int i = 0; i < n; ++i) {
-          int q = 0;
-          if (!getChoice(interp, items[i], "quantity", kQuantityNames, q)) return false;
-          if (needsLattice(q) && !s.manager.hasLattice())
-            return reject(interp, "LOOKUP LATTICE", needsLatticeMessage(q));
-          if (!seen.insert(q).second)
-            return reject(interp, "VALUE QUANTITIES",
-                          std::string("-quantities names \"") + kQuantityNames[q] + "\" twice");
-          quantities.push_back(q);
-        }
-        if (quantities.empty()) return reject(interp, "VALUE QUANTITIES", "-quantities is empty");
-        chosen = true;
-        return true;
-      }))
-    return TCL_ERROR;
-  if (!chosen)  // everything that applies: the fluid's quantities with a lattice
+  RecordDraft draft{.hasLattice = s.manager.hasLattice()};
+  if (!kRecordOptions.apply(interp, objc, objv, 2, draft)) return TCL_ERROR;
+  if (draft.quantities.empty())  // everything that applies: the fluid's quantities with a lattice
     for (int q = 0; q < qCount; ++q)
-      if (!needsLattice(q) || s.manager.hasLattice()) quantities.push_back(q);
-  if (startRecorder(s, std::make_unique<SceneRecorder>(path, every, std::move(quantities)), objc,
-                    objv) != TCL_OK)
+      if (!needsLattice(q) || draft.hasLattice) draft.quantities.push_back(q);
+  if (startRecorder(s,
+                    std::make_unique<SceneRecorder>(path, draft.every, std::move(draft.quantities)),
+                    objc, objv) != TCL_OK)
     return TCL_ERROR;
   Tcl_SetObjResult(interp, newString(path));
   return TCL_OK;

@@ -6,20 +6,17 @@
 
 #include "lattice_sides.hpp"
 #include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/session.hpp"
 
 namespace sf::tcl {
 namespace {
 
-const OptionSpec kRunOptions[] = {
-    {"-every", "K script", "evaluate script every K steps; break stops the run"},
-    {nullptr, nullptr, nullptr}};
-
 // One step, with the kernel's error turned into a Tcl error and warnings passed
-    updateTimedSides(s.interp, s.manager);  // -expr sides in $t, at the step's time
 // on, then the recorders (output csv, output movie) that are due.
 int advance(Session& s) {
   const int code = guarded(s.interp, [&] {
+    updateTimedSides(s.interp, s.manager);  // -expr sides in $t, at the step's time
     s.manager.step();
     return TCL_OK;
   });
@@ -85,6 +82,16 @@ struct RunRequest {
   std::string framePrefix;
 };
 
+// -every K script: the row converts K; the script, a second value, the
+// command takes after it.
+Option<RunRequest> everyScriptRow() {
+  Option<RunRequest> row =
+      everyRow("evaluate script every K steps; break stops the run", &RunRequest::every, "");
+  row.info.synopsis = "K script";
+  return row;
+}
+const OptionTable<RunRequest> kRunOptions{everyScriptRow()};
+
 // A global variable as a whole number >= least; false (with the error) when it
 // is not one.
 bool globalCount(Tcl_Interp* interp, const char* name, Tcl_Obj* value, Tcl_WideInt least,
@@ -135,8 +142,11 @@ int parseRun(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], RunRequest& r)
   }
   if (objc == 4 || objc == 5) {
     const int at = objc - 3;
-    if (optionIndex(interp, objv[at], kRunOptions) < 0) return TCL_ERROR;
-    if (!getEvery(interp, objv[at + 1], r.every)) return TCL_ERROR;
+    OptionValue every;
+    if (optionIndex(interp, objv[at], kRunOptions.specs()) < 0 ||
+        !convertOption(interp, objv[at + 1], kRunOptions.info(0), every))
+      return TCL_ERROR;
+    r.every = every.integer;
     r.script = objv[at + 2];
   }
   return counted ? TCL_OK : thesisRun(interp, r);
@@ -166,7 +176,8 @@ int everyK(Session& s, const RunRequest& r) {
 }
 
 int Run(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (answerHelp(interp, objc, objv, "run", {"?N? ?-every K script?"}, kRunOptions)) return TCL_OK;
+  static const std::string help = kRunOptions.help("run", {"?N? ?-every K script?", "help"}, {});
+  if (answerHelp(interp, objc, objv, help)) return TCL_OK;
   Session& s = sessionOf(data);
   if (refuseWhileRunning(s) != TCL_OK) return TCL_ERROR;
   RunRequest r;

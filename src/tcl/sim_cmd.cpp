@@ -43,110 +43,101 @@ int solidRatioChoice(int subcells) {
 
 using Row = Option<SimDraft>;
 const OptionTable<SimDraft> kOptions{
-    Row{{"-timestep",
-         "dt",
-         "fix the timestep (a lattice's tau then follows from it)",
-         ValueKind::real,
-         "time",
-         {.min = 0, .minOpen = true}},
-        [](const SimDraft& s) { return realValue(s.timestep); },
-        [](SimDraft& s, const OptionValue& v) { s.timestep = v.real; }},
-    Row{{"-threads",
-         "n",
-         "threads for the step (results do not depend on it)",
-         ValueKind::integer,
-         "",
-         {.min = 1, .max = sim::Manager::kMaxThreads}},
-        [](const SimDraft& s) { return integerValue(s.threads); },
-        [](SimDraft& s, const OptionValue& v) { s.threads = v.integer; }},
-    Row{{"-gravity", "{gx gy}", "gravitational acceleration on the elements", ValueKind::vec2,
-         "length/time^2"},
-        [](const SimDraft& s) { return vecValue(s.gravity); },
-        [](SimDraft& s, const OptionValue& v) { s.gravity = v.vec; }},
-    Row{{"-integrator",
-         "central|euler|verlet",
-         "element integrator: central difference, the thesis's first-order scheme, velocity "
-         "Verlet",
-         ValueKind::choice,
-         "",
-         {},
-         dem::integratorNames},
-        [](const SimDraft& s) { return choiceValue(s.integrator); },
-        [](SimDraft& s, const OptionValue& v) { s.integrator = v.choice; }},
-    Row{{"-maxoverlap",
-         "f",
-         "a contact overlapping more than f of the smaller element stops the run",
-         ValueKind::real,
-         "",
-         {.min = 0, .max = dem::Assembly::kMaxOverlapLimit, .minOpen = true}},
-        [](const SimDraft& s) { return realValue(s.maxOverlap); },
-        [](SimDraft& s, const OptionValue& v) { s.maxOverlap = v.real; }},
-    Row{{"-solidratio",
-         "exact|1|2|4|8",
-         "solid ratio of covered cells: exact areas, or n x n subcell centres per cell (1: the "
-         "stair-step limit)",
-         ValueKind::choice,
-         "",
-         {},
-         kSolidRatioNames,
-         "solid ratio"},
-        [](const SimDraft& s) { return choiceValue(solidRatioChoice(s.coupled.subcells)); },
-        [](SimDraft& s, const OptionValue& v) {
-          s.coupled.subcells = kSolidRatioSubcells[v.choice];
-        }},
-    Row{{"-substeps",
-         "n",
-         "element steps per fluid step, each dt/n under the step's fluid force",
-         ValueKind::integer,
-         "",
-         {.min = 1, .max = sim::Manager::kMaxSubsteps}},
-        [](const SimDraft& s) { return integerValue(s.substeps); },
-        [](SimDraft& s, const OptionValue& v) { s.substeps = v.integer; }},
-    Row{{"-buoyancy", "0|1", "static buoyancy -rho_f A g on elements in the fluid",
-         ValueKind::boolean},
-        [](const SimDraft& s) { return booleanValue(s.coupled.buoyancy); },
-        [](SimDraft& s, const OptionValue& v) { s.coupled.buoyancy = v.boolean; }},
-    Row{{"-share",
-         "coverage|equal",
-         "force of a cell covered by several solids: by coverage or equal shares (the thesis's)",
-         ValueKind::choice,
-         "",
-         {},
-         coupling::shareNames},
-        [](const SimDraft& s) { return choiceValue(int(s.coupled.share)); },
-        [](SimDraft& s, const OptionValue& v) { s.coupled.share = coupling::Share(v.choice); }},
-    Row{{"-interior",
-         "equilibrium|collide",
-         "cells deep inside solids: set to the equilibrium at the solid velocity, or collided "
-         "with the Noble-Torczynski operator like the rest",
-         ValueKind::choice,
-         "",
-         {},
-         kInteriorNames},
-        [](const SimDraft& s) { return choiceValue(s.coupled.equilibriumInterior ? 0 : 1); },
-        [](SimDraft& s, const OptionValue& v) { s.coupled.equilibriumInterior = v.choice == 0; }},
-    Row{{"-coupling",
-         "explicit|implicit",
-         "velocity the fluid sees: the element's at the start of the step (the thesis's), or "
-         "solved with the force it causes (stable for light elements)",
-         ValueKind::choice,
-         "",
-         {},
-         kCouplingNames},
-        [](const SimDraft& s) { return choiceValue(s.coupled.implicit ? 1 : 0); },
-        [](SimDraft& s, const OptionValue& v) { s.coupled.implicit = v.choice == 1; }},
-    Row{{"-accuracy",
-         "draft|normal|fine",
-         "a measured set of the accuracy knobs (docs/accuracy.md): the lattice's tau (its "
-         "viscosity kept), collision and forcing, and -solidratio, -coupling, -integrator and "
-         "-substeps; options given with it win; custom: none of the three (setting it changes "
-         "nothing)",
-         ValueKind::choice,
-         "",
-         {},
-         kAccuracyNames},
-        [](const SimDraft& s) { return choiceValue(s.accuracy); },
-        [](SimDraft& s, const OptionValue& v) { s.accuracy = v.choice; }},
+    Row{.info = {.name = "-timestep",
+                 .synopsis = "dt",
+                 .help = "fix the timestep (a lattice's tau then follows from it)",
+                 .unit = "time",
+                 .range = {.min = 0, .minOpen = true}},
+        .get = [](const SimDraft& s) { return realValue(s.timestep); },
+        .set = [](SimDraft& s, const OptionValue& v) { s.timestep = v.real; }},
+    Row{.info = {.name = "-threads",
+                 .synopsis = "n",
+                 .help = "threads for the step (results do not depend on it)",
+                 .kind = ValueKind::integer,
+                 .range = {.min = 1, .max = sim::Manager::kMaxThreads}},
+        .get = [](const SimDraft& s) { return integerValue(s.threads); },
+        .set = [](SimDraft& s, const OptionValue& v) { s.threads = v.integer; }},
+    Row{.info = {.name = "-gravity",
+                 .synopsis = "{gx gy}",
+                 .help = "gravitational acceleration on the elements",
+                 .kind = ValueKind::vec2,
+                 .unit = "length/time^2"},
+        .get = [](const SimDraft& s) { return vecValue(s.gravity); },
+        .set = [](SimDraft& s, const OptionValue& v) { s.gravity = v.vec; }},
+    Row{.info = {.name = "-integrator",
+                 .synopsis = "central|euler|verlet",
+                 .help = "element integrator: central difference, the thesis's first-order "
+                         "scheme, velocity Verlet",
+                 .kind = ValueKind::choice,
+                 .choices = dem::integratorNames},
+        .get = [](const SimDraft& s) { return choiceValue(s.integrator); },
+        .set = [](SimDraft& s, const OptionValue& v) { s.integrator = v.choice; }},
+    Row{.info = {.name = "-maxoverlap",
+                 .synopsis = "f",
+                 .help = "a contact overlapping more than f of the smaller element stops the run",
+                 .range = {.min = 0, .max = dem::Assembly::kMaxOverlapLimit, .minOpen = true}},
+        .get = [](const SimDraft& s) { return realValue(s.maxOverlap); },
+        .set = [](SimDraft& s, const OptionValue& v) { s.maxOverlap = v.real; }},
+    Row{.info = {.name = "-solidratio",
+                 .synopsis = "exact|1|2|4|8",
+                 .help = "solid ratio of covered cells: exact areas, or n x n subcell centres "
+                         "per cell (1: the stair-step limit)",
+                 .kind = ValueKind::choice,
+                 .choices = kSolidRatioNames,
+                 .what = "solid ratio"},
+        .get = [](const SimDraft& s) { return choiceValue(solidRatioChoice(s.coupled.subcells)); },
+        .set = [](SimDraft& s,
+                  const OptionValue& v) { s.coupled.subcells = kSolidRatioSubcells[v.choice]; }},
+    Row{.info = {.name = "-substeps",
+                 .synopsis = "n",
+                 .help = "element steps per fluid step, each dt/n under the step's fluid force",
+                 .kind = ValueKind::integer,
+                 .range = {.min = 1, .max = sim::Manager::kMaxSubsteps}},
+        .get = [](const SimDraft& s) { return integerValue(s.substeps); },
+        .set = [](SimDraft& s, const OptionValue& v) { s.substeps = v.integer; }},
+    Row{.info = {.name = "-buoyancy",
+                 .synopsis = "0|1",
+                 .help = "static buoyancy -rho_f A g on elements in the fluid",
+                 .kind = ValueKind::boolean},
+        .get = [](const SimDraft& s) { return booleanValue(s.coupled.buoyancy); },
+        .set = [](SimDraft& s, const OptionValue& v) { s.coupled.buoyancy = v.boolean; }},
+    Row{.info = {.name = "-share",
+                 .synopsis = "coverage|equal",
+                 .help = "force of a cell covered by several solids: by coverage or equal "
+                         "shares (the thesis's)",
+                 .kind = ValueKind::choice,
+                 .choices = coupling::shareNames},
+        .get = [](const SimDraft& s) { return choiceValue(int(s.coupled.share)); },
+        .set = [](SimDraft& s,
+                  const OptionValue& v) { s.coupled.share = coupling::Share(v.choice); }},
+    Row{.info = {.name = "-interior",
+                 .synopsis = "equilibrium|collide",
+                 .help = "cells deep inside solids: set to the equilibrium at the solid "
+                         "velocity, or collided with the Noble-Torczynski operator like the rest",
+                 .kind = ValueKind::choice,
+                 .choices = kInteriorNames},
+        .get = [](const SimDraft& s) { return choiceValue(s.coupled.equilibriumInterior ? 0 : 1); },
+        .set = [](SimDraft& s,
+                  const OptionValue& v) { s.coupled.equilibriumInterior = v.choice == 0; }},
+    Row{.info = {.name = "-coupling",
+                 .synopsis = "explicit|implicit",
+                 .help = "velocity the fluid sees: the element's at the start of the step (the "
+                         "thesis's), or solved with the force it causes (stable for light "
+                         "elements)",
+                 .kind = ValueKind::choice,
+                 .choices = kCouplingNames},
+        .get = [](const SimDraft& s) { return choiceValue(s.coupled.implicit ? 1 : 0); },
+        .set = [](SimDraft& s, const OptionValue& v) { s.coupled.implicit = v.choice == 1; }},
+    Row{.info = {.name = "-accuracy",
+                 .synopsis = "draft|normal|fine",
+                 .help = "a measured set of the accuracy knobs (docs/accuracy.md): the "
+                         "lattice's tau (its viscosity kept), collision and forcing, and "
+                         "-solidratio, -coupling, -integrator and -substeps; options given with "
+                         "it win; custom: none of the three (setting it changes nothing)",
+                 .kind = ValueKind::choice,
+                 .choices = kAccuracyNames},
+        .get = [](const SimDraft& s) { return choiceValue(s.accuracy); },
+        .set = [](SimDraft& s, const OptionValue& v) { s.accuracy = v.choice; }},
 };
 // The rows whose presence the commands read (the table's own order aside).
 const int kTimestep = kOptions.index("-timestep"), kThreads = kOptions.index("-threads"),
@@ -239,17 +230,6 @@ int SimCget(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
   return TCL_OK;
 }
 
-// The option table itself, one dict per option (the workbench's property
-// panel builds its fields from it).
-int SimOptions(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
-    return TCL_ERROR;
-  }
-  Tcl_SetObjResult(interp, kOptions.describe(defaults()));
-  return TCL_OK;
-}
-
 int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   if (objc != 1) {
     Tcl_WrongNumArgs(interp, 1, objv, nullptr);
@@ -326,28 +306,6 @@ int SimCheck(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
   return TCL_OK;
 }
 
-int SimHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
-    return TCL_ERROR;
-  }
-  Tcl_SetObjResult(
-      interp, newString(kOptions.help("sim",
-                                      {"configure ?-option value ...?", "cget -option",
-                                       "info    -> dict time step timestep tau mach elements "
-                                       "contacts bonds broken nodes mlups stable covered "
-                                       "fluidforce ... passes",
-                                       "hash    -> the state's CRC-32, 8 hex digits",
-                                       "estimate ?N? -> dict steps seconds perstep basis "
-                                       "basissteps passes: the next N steps' time (100)",
-                                       "check   -> the invariants that fail (empty: all hold)",
-                                       "options -> the options as dicts: name type unit min max "
-                                       "choices default help ...",
-                                       "help"},
-                                      defaults())));
-  return TCL_OK;
-}
-
 }  // namespace
 
 void registerSimCommands(Tcl_Interp* interp, Session* session) {
@@ -357,10 +315,21 @@ void registerSimCommands(Tcl_Interp* interp, Session* session) {
                 {"info", SimInfo},
                 {"hash", SimHash},
                 {"check", SimCheck},
-                {"estimate", SimEstimate},
-                {"options", SimOptions},
-                {"help", SimHelp}},
-               session);
+                {"estimate", SimEstimate}},
+               session,
+               kOptions.answers("sim",
+                                {"configure ?-option value ...?", "cget -option",
+                                 "info    -> dict time step timestep tau mach elements "
+                                 "contacts bonds broken nodes mlups stable covered "
+                                 "fluidforce ... passes",
+                                 "hash    -> the state's CRC-32, 8 hex digits",
+                                 "estimate ?N? -> dict steps seconds perstep basis "
+                                 "basissteps passes: the next N steps' time (100)",
+                                 "check   -> the invariants that fail (empty: all hold)",
+                                 "options -> the options as dicts: name type unit min max "
+                                 "choices default help ...",
+                                 "help"},
+                                defaults()));
 }
 
 }  // namespace sf::tcl

@@ -15,16 +15,27 @@ struct SourceDraft {
 
 using Row = Option<SourceDraft>;
 const OptionTable<SourceDraft> kOptions{
-    Row{{"-acceleration", "{ax ay}", "body acceleration of each clone", ValueKind::vec2,
-         "length/time^2"},
-        [](const SourceDraft& s) { return vecValue(s.acceleration); },
-        [](SourceDraft& s, const OptionValue& v) { s.acceleration = v.vec; }},
-    Row{{"-interval", "t", "least time between two clones", ValueKind::real, "time", {.min = 0}},
-        [](const SourceDraft& s) { return realValue(s.interval); },
-        [](SourceDraft& s, const OptionValue& v) { s.interval = v.real; }},
-    Row{{"-limit", "n", "clones to make; -1 for no limit", ValueKind::integer, "", {.min = -1}},
-        [](const SourceDraft& s) { return integerValue(s.limit); },
-        [](SourceDraft& s, const OptionValue& v) { s.limit = v.integer; }},
+    Row{.info = {.name = "-acceleration",
+                 .synopsis = "{ax ay}",
+                 .help = "body acceleration of each clone",
+                 .kind = ValueKind::vec2,
+                 .unit = "length/time^2"},
+        .get = [](const SourceDraft& s) { return vecValue(s.acceleration); },
+        .set = [](SourceDraft& s, const OptionValue& v) { s.acceleration = v.vec; }},
+    Row{.info = {.name = "-interval",
+                 .synopsis = "t",
+                 .help = "least time between two clones",
+                 .unit = "time",
+                 .range = {.min = 0}},
+        .get = [](const SourceDraft& s) { return realValue(s.interval); },
+        .set = [](SourceDraft& s, const OptionValue& v) { s.interval = v.real; }},
+    Row{.info = {.name = "-limit",
+                 .synopsis = "n",
+                 .help = "clones to make; -1 for no limit",
+                 .kind = ValueKind::integer,
+                 .range = {.min = -1}},
+        .get = [](const SourceDraft& s) { return integerValue(s.limit); },
+        .set = [](SourceDraft& s, const OptionValue& v) { s.limit = v.integer; }},
 };
 
 int SourceCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
@@ -44,17 +55,9 @@ int SourceCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const o
   });
 }
 
-bool getSourceId(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int& id) {
-  if (objc != 2) {
-    Tcl_WrongNumArgs(interp, 1, objv, "ID");
-    return false;
-  }
-  return getInt(interp, objv[1], "ID", id);
-}
-
 int SourceDelete(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   int id = 0;
-  if (!getSourceId(interp, objc, objv, id)) return TCL_ERROR;
+  if (!getSoleId(interp, objc, objv, "ID", id)) return TCL_ERROR;
   return guarded(interp, [&] {
     sessionOf(data).manager.assembly().removeSource(id);
     return TCL_OK;
@@ -75,7 +78,7 @@ int SourceIds(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
 
 int SourceInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   int id = 0;
-  if (!getSourceId(interp, objc, objv, id)) return TCL_ERROR;
+  if (!getSoleId(interp, objc, objv, "ID", id)) return TCL_ERROR;
   for (const dem::Source& s : sessionOf(data).manager.assembly().sources()) {
     if (s.id != id) continue;
     Tcl_Obj* clones = Tcl_NewListObj(0, nullptr);
@@ -91,31 +94,6 @@ int SourceInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
   return fail(interp, "LOOKUP SOURCE", "element " + std::to_string(id) + " is not a source");
 }
 
-// create's options, one dict each (as `sim options`).
-int SourceOptions(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
-    return TCL_ERROR;
-  }
-  Tcl_SetObjResult(interp, kOptions.describe(SourceDraft{}));
-  return TCL_OK;
-}
-
-int SourceHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
-    return TCL_ERROR;
-  }
-  Tcl_SetObjResult(
-      interp, newString(kOptions.help("source",
-                                      {"create ID ?-acceleration {ax ay}? ?-interval t? ?-limit "
-                                       "n?   (element ID becomes a source)",
-                                       "delete ID", "ids", "info ID   -> dict ... made clones",
-                                       "options   -> create's options as dicts", "help"},
-                                      SourceDraft{})));
-  return TCL_OK;
-}
-
 }  // namespace
 
 void registerSourceCommands(Tcl_Interp* interp, Session* session) {
@@ -123,10 +101,14 @@ void registerSourceCommands(Tcl_Interp* interp, Session* session) {
                {{"create", SourceCreate},
                 {"delete", SourceDelete},
                 {"ids", SourceIds},
-                {"info", SourceInfo},
-                {"options", SourceOptions},
-                {"help", SourceHelp}},
-               session);
+                {"info", SourceInfo}},
+               session,
+               kOptions.answers("source",
+                                {"create ID ?-acceleration {ax ay}? ?-interval t? ?-limit "
+                                 "n?   (element ID becomes a source)",
+                                 "delete ID", "ids", "info ID   -> dict ... made clones",
+                                 "options   -> create's options as dicts", "help"},
+                                SourceDraft{}));
 }
 
 }  // namespace sf::tcl

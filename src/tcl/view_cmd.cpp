@@ -84,11 +84,7 @@ int ViewPixel(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
   });
 }
 
-int ViewHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-  if (objc != 1) {
-    Tcl_WrongNumArgs(interp, 1, objv, nullptr);
-    return TCL_ERROR;
-  }
+std::string viewHelp() {
   std::string text =
       helpText("view",
                {"configure ?-option value ...?", "cget -option",
@@ -97,8 +93,7 @@ int ViewHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
                nullptr);
   text += "\noptions (also of snapshot and output movie):\n" + viewOptionHelp(true);
   text.pop_back();
-  Tcl_SetObjResult(interp, newString(text));
-  return TCL_OK;
+  return text;
 }
 
 bool endsWithPng(const std::string& path) {
@@ -163,9 +158,8 @@ void registerViewCommands(Tcl_Interp* interp, Session* session) {
                {{"configure", ViewConfigure},
                 {"cget", ViewCget},
                 {"pixel", ViewPixel},
-                {"options", ViewOptionsTable},
-                {"help", ViewHelp}},
-               session);
+                {"options", ViewOptionsTable}},
+               session, {.help = viewHelp()});
   Tcl_CreateObjCommand(interp, "::sf::snapshot", Snapshot, session, nullptr);
 }
 

@@ -92,60 +92,60 @@ Option<ViewDraft> flag(const char* name, const char* help, bool render::ViewOpti
 
 using Row = Option<ViewDraft>;
 const OptionTable<ViewDraft> kOptions{
-    Row{{"-field",
-         "none|nodes|solid|density|pressure|velocity|vorticity",
-         "lattice field under the colour map ({}: velocity with a lattice, else none)",
-         ValueKind::choice,
-         "",
-         {},
-         render::fieldNames,
-         "field",
-         nullptr,
-         nullptr,
-         true},
-        [](const ViewDraft& s) {
-          return s.v.field ? OptionValue{.choice = int(*s.v.field)} : OptionValue{.empty = true};
-        },
-        [](ViewDraft& s, const OptionValue& x) {
-          if (x.empty)
-            s.v.field.reset();
-          else
-            s.v.field = render::Field(x.choice);
-        }},
+    Row{.info = {.name = "-field",
+                 .synopsis = "none|nodes|solid|density|pressure|velocity|vorticity",
+                 .help =
+                     "lattice field under the colour map ({}: velocity with a lattice, else none)",
+                 .kind = ValueKind::choice,
+                 .choices = render::fieldNames,
+                 .what = "field",
+                 .orEmpty = true},
+        .get =
+            [](const ViewDraft& s) {
+              return s.v.field ? OptionValue{.choice = int(*s.v.field)}
+                               : OptionValue{.empty = true};
+            },
+        .set =
+            [](ViewDraft& s, const OptionValue& x) {
+              if (x.empty)
+                s.v.field.reset();
+              else
+                s.v.field = render::Field(x.choice);
+            }},
     flag("-vectors", "velocity arrows on a sub-sampled grid", &render::ViewOptions::vectors),
     flag("-streamlines", "streamlines of the velocity field", &render::ViewOptions::streamlines),
-    Row{{"-range", "{lo hi}", "the colour map's range ({}: the values shown)", ValueKind::custom},
-        nullptr,
-        nullptr,
-        [](Tcl_Interp* interp, Tcl_Obj* x, ViewDraft& s) {
-          return getOptionalDoubles(interp, x, "-range", s.v.range);
-        },
-        [](const ViewDraft& s) {
-          return s.v.range ? doubles(s.v.range->data(), 2) : Tcl_NewObj();
-        }},
-    Row{{"-colorby",
-         "none|speed|mass|bond",
-         "element fill: material colour, or a colour map",
-         ValueKind::choice,
-         "",
-         {},
-         render::colorByNames,
-         "colorby"},
-        [](const ViewDraft& s) { return OptionValue{.choice = int(s.v.colorBy)}; },
-        [](ViewDraft& s, const OptionValue& x) { s.v.colorBy = render::ColorBy(x.choice); }},
-    Row{{"-materialcolors", "{name #rrggbb ...}", "fill colours of materials (else a palette)",
-         ValueKind::custom},
-        nullptr,
-        nullptr,
-        [](Tcl_Interp* interp, Tcl_Obj* x, ViewDraft& s) {
-          return getMaterialColors(interp, x, s.v);
-        },
-        [](const ViewDraft& s) {
-          Tcl_Obj* dict = Tcl_NewDictObj();
-          for (const auto& [name, colour] : s.v.materialColors)
-            Tcl_DictObjPut(nullptr, dict, newString(name), newString(render::formatColor(colour)));
-          return dict;
-        }},
+    Row{.info = {.name = "-range",
+                 .synopsis = "{lo hi}",
+                 .help = "the colour map's range ({}: the values shown)",
+                 .kind = ValueKind::custom},
+        .parse = [](Tcl_Interp* interp, Tcl_Obj* x,
+                    ViewDraft& s) { return getOptionalDoubles(interp, x, "-range", s.v.range); },
+        .show =
+            [](const ViewDraft& s) {
+              return s.v.range ? doubles(s.v.range->data(), 2) : Tcl_NewObj();
+            }},
+    Row{.info = {.name = "-colorby",
+                 .synopsis = "none|speed|mass|bond",
+                 .help = "element fill: material colour, or a colour map",
+                 .kind = ValueKind::choice,
+                 .choices = render::colorByNames,
+                 .what = "colorby"},
+        .get = [](const ViewDraft& s) { return OptionValue{.choice = int(s.v.colorBy)}; },
+        .set = [](ViewDraft& s, const OptionValue& x) { s.v.colorBy = render::ColorBy(x.choice); }},
+    Row{.info = {.name = "-materialcolors",
+                 .synopsis = "{name #rrggbb ...}",
+                 .help = "fill colours of materials (else a palette)",
+                 .kind = ValueKind::custom},
+        .parse = [](Tcl_Interp* interp, Tcl_Obj* x,
+                    ViewDraft& s) { return getMaterialColors(interp, x, s.v); },
+        .show =
+            [](const ViewDraft& s) {
+              Tcl_Obj* dict = Tcl_NewDictObj();
+              for (const auto& [name, colour] : s.v.materialColors)
+                Tcl_DictObjPut(nullptr, dict, newString(name),
+                               newString(render::formatColor(colour)));
+              return dict;
+            }},
     flag("-fill", "elements filled (0: outlines only, the cells under them show)",
          &render::ViewOptions::fill),
     flag("-bonds", "intact bonds as lines, breaks as crosses", &render::ViewOptions::bonds),
@@ -156,40 +156,42 @@ const OptionTable<ViewDraft> kOptions{
     flag("-axes", "the axes x = 0 and y = 0, coordinates along the edges",
          &render::ViewOptions::axes),
     flag("-scalebar", "a bar of a round length, bottom right", &render::ViewOptions::scalebar),
-    Row{{"-size", "{W H}", "picture size in pixels", ValueKind::custom},
-        nullptr,
-        nullptr,
-        [](Tcl_Interp* interp, Tcl_Obj* x, ViewDraft& s) {
-          return getSize(interp, x, s.v.width, s.v.height);
-        },
-        [](const ViewDraft& s) {
-          Tcl_Obj* wh[2] = {Tcl_NewIntObj(s.v.width), Tcl_NewIntObj(s.v.height)};
-          return Tcl_NewListObj(2, wh);
-        }},
-    Row{{"-region", "{x0 y0 x1 y1}", "world window ({}: the lattice, else the elements)",
-         ValueKind::custom},
-        nullptr,
-        nullptr,
-        [](Tcl_Interp* interp, Tcl_Obj* x, ViewDraft& s) {
-          return getOptionalDoubles(interp, x, "-region", s.v.region);
-        },
-        [](const ViewDraft& s) {
-          return s.v.region ? doubles(s.v.region->data(), 4) : Tcl_NewObj();
-        }},
-    Row{{"-offscreen", "auto|osmesa|egl", "headless OpenGL back end (before the first picture)",
-         ValueKind::custom},
-        nullptr,
-        nullptr,
-        [](Tcl_Interp* interp, Tcl_Obj* x, ViewDraft& s) {
-          if (!s.withOffscreen)
-            return reject(interp, "VALUE OPTION",
-                          "-offscreen is set with view configure, before the first picture");
-          int choice = 0;
-          if (!getChoice(interp, x, "offscreen", kOffscreenNames, choice)) return false;
-          s.offscreen = kOffscreenNames[choice];
-          return true;
-        },
-        [](const ViewDraft& s) { return newString(s.offscreen); }},
+    Row{.info = {.name = "-size",
+                 .synopsis = "{W H}",
+                 .help = "picture size in pixels",
+                 .kind = ValueKind::custom},
+        .parse = [](Tcl_Interp* interp, Tcl_Obj* x,
+                    ViewDraft& s) { return getSize(interp, x, s.v.width, s.v.height); },
+        .show =
+            [](const ViewDraft& s) {
+              Tcl_Obj* wh[2] = {Tcl_NewIntObj(s.v.width), Tcl_NewIntObj(s.v.height)};
+              return Tcl_NewListObj(2, wh);
+            }},
+    Row{.info = {.name = "-region",
+                 .synopsis = "{x0 y0 x1 y1}",
+                 .help = "world window ({}: the lattice, else the elements)",
+                 .kind = ValueKind::custom},
+        .parse = [](Tcl_Interp* interp, Tcl_Obj* x,
+                    ViewDraft& s) { return getOptionalDoubles(interp, x, "-region", s.v.region); },
+        .show =
+            [](const ViewDraft& s) {
+              return s.v.region ? doubles(s.v.region->data(), 4) : Tcl_NewObj();
+            }},
+    Row{.info = {.name = "-offscreen",
+                 .synopsis = "auto|osmesa|egl",
+                 .help = "headless OpenGL back end (before the first picture)",
+                 .kind = ValueKind::custom},
+        .parse =
+            [](Tcl_Interp* interp, Tcl_Obj* x, ViewDraft& s) {
+              if (!s.withOffscreen)
+                return reject(interp, "VALUE OPTION",
+                              "-offscreen is set with view configure, before the first picture");
+              int choice = 0;
+              if (!getChoice(interp, x, "offscreen", kOffscreenNames, choice)) return false;
+              s.offscreen = kOffscreenNames[choice];
+              return true;
+            },
+        .show = [](const ViewDraft& s) { return newString(s.offscreen); }},
 };
 constexpr int kOffscreen = 15;
 

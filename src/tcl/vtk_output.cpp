@@ -9,6 +9,7 @@
 #include "sandflow/io/atomic_files.hpp"
 #include "sandflow/io/vtk.hpp"
 #include "sandflow/tcl/args.hpp"
+#include "sandflow/tcl/option_table.hpp"
 #include "sandflow/tcl/session.hpp"
 
 namespace sf::tcl {
@@ -85,9 +86,14 @@ class VtkRecorder final : public Recorder {
   std::vector<io::CollectionEntry> entries_;
 };
 
-const OptionSpec kVtkOptions[] = {
-    {"-every", "K", "record the scene every K steps as a numbered series, listed in PREFIX.pvd"},
-    {nullptr, nullptr, nullptr}};
+// What output vtk is asked, besides the prefix; every 0: write once.
+struct VtkDraft {
+  int every = 0;
+};
+const OptionTable<VtkDraft> kVtkOptions{
+    everyRow("record the scene every K steps as a numbered series, listed in PREFIX.pvd",
+             &VtkDraft::every, "none: written once"),
+};
 
 }  // namespace
 
@@ -99,10 +105,9 @@ int OutputVtk(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
   Session& s = *static_cast<Session*>(data);
   const std::string prefix = Tcl_GetString(objv[1]);
   if (prefix.empty()) return fail(interp, "VALUE PREFIX", "PREFIX must not be empty");
-  int every = 0;  // 0: write once
-  if (!parseOptions(interp, objc, objv, 2, kVtkOptions,
-                    [&](int, Tcl_Obj* o) { return getEvery(interp, o, every); }))
-    return TCL_ERROR;
+  VtkDraft draft;
+  if (!kVtkOptions.apply(interp, objc, objv, 2, draft)) return TCL_ERROR;
+  const int every = draft.every;
   if (!s.manager.hasLattice() && s.manager.assembly().empty())
     return fail(interp, "LOOKUP SCENE",
                 "nothing to write: the scene has no lattice and no elements");
@@ -123,6 +128,10 @@ int OutputVtk(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
     Tcl_SetObjResult(interp, list);
     return TCL_OK;
   });
+}
+
+std::string outputVtkOptions() {
+  return kVtkOptions.help("output vtk", {}, VtkDraft{});
 }
 
 }  // namespace sf::tcl

@@ -55,6 +55,10 @@ bool getChoice(Tcl_Interp* interp, Tcl_Obj* obj, const char* what, const char* c
 // problem. Duplicates are allowed; the last one wins, as in Tk.
 bool parseOptions(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], int first,
                   const OptionSpec* table, const std::function<bool(int, Tcl_Obj*)>& handle);
+// The value of -elements: a non-empty list of element ids (not looked up).
+bool getElementIds(Tcl_Interp* interp, Tcl_Obj* obj, std::vector<int>& ids);
+// "VERB ID": objv holds just the id, named `what` in the messages ("ID", "BID").
+bool getSoleId(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], const char* what, int& id);
 // Index of one option name, or -1 with the "bad option" error set.
 int optionIndex(Tcl_Interp* interp, Tcl_Obj* name, const OptionSpec* table);
 
@@ -69,9 +73,8 @@ void dictPut(Tcl_Obj* dict, const char* key, Tcl_Obj* value);
 std::string helpText(const char* noun, std::initializer_list<const char*> verbs,
                      const OptionSpec* options);
 // `NOUN help` of a command that is not an ensemble (record, plot, run): true,
-// with the help text as the result, when objv is exactly {NOUN help}.
-bool answerHelp(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], const char* noun,
-                std::initializer_list<const char*> forms, const OptionSpec* options);
+// with `text` (its table's help) as the result, when objv is exactly {NOUN help}.
+bool answerHelp(Tcl_Interp* interp, int objc, Tcl_Obj* const objv[], const std::string& text);
 
 // Creates the ensemble ::sf::NOUN whose verbs are the given commands.
 struct Verb {
@@ -80,6 +83,16 @@ struct Verb {
 };
 void makeEnsemble(Tcl_Interp* interp, const char* qualifiedName, std::initializer_list<Verb> verbs,
                   ClientData data);
+// What `NOUN help` and `NOUN options` answer, made once from the noun's option
+// table (OptionTable::answers): fixed texts, so that no noun writes these verbs.
+struct NounAnswers {
+  std::string help = {};     // the help verb's text
+  std::string options = {};  // the options verb's list of dicts; "" where the noun has none
+};
+// makeEnsemble, with the verbs help and (unless answers.options is "") options
+// answering the texts.
+void makeEnsemble(Tcl_Interp* interp, const char* qualifiedName, std::initializer_list<Verb> verbs,
+                  ClientData data, NounAnswers answers);
 
 // Runs `body`, turning an sf::Error (or a failed allocation) into a Tcl error.
 template <class Body>

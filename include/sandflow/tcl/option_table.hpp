@@ -7,6 +7,7 @@
 #include <functional>
 #include <initializer_list>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -98,34 +99,82 @@ Tcl_Obj* describeOption(const OptionInfo& info, Tcl_Obj* defaultValue);
 template <class Draft>
 struct Option {
   OptionInfo info;
-  std::function<OptionValue(const Draft&)> get;
-  std::function<void(Draft&, const OptionValue&)> set;
+  std::function<OptionValue(const Draft&)> get = nullptr;
+  std::function<void(Draft&, const OptionValue&)> set = nullptr;
   // Instead of get and set (ValueKind::custom, or a row whose choices are not
   // fixed): convert onto the draft (false with the error set), and show.
   std::function<bool(Tcl_Interp*, Tcl_Obj*, Draft&)> parse = nullptr;
   std::function<Tcl_Obj*(const Draft&)> show = nullptr;
 };
 
-// A row over a plain member of the draft: a real (double) or a boolean.
+// A row over a plain member of the draft: a real (double), a whole number
+// (int), a boolean, or a text (std::string; std::optional<std::string>, shown
+// as {} until given).
 template <class Draft, class Value>
 Option<Draft> memberRow(OptionInfo info, Value Draft::*member) {
-  static_assert(std::is_same_v<Value, double> || std::is_same_v<Value, bool>);
-  if constexpr (std::is_same_v<Value, bool>) info.kind = ValueKind::boolean;
-  return {.info = info,
-          .get =
-              [member](const Draft& d) {
-                if constexpr (std::is_same_v<Value, bool>)
-                  return booleanValue(d.*member);
-                else
-                  return realValue(d.*member);
-              },
-          .set =
-              [member](Draft& d, const OptionValue& v) {
-                if constexpr (std::is_same_v<Value, bool>)
-                  d.*member = v.boolean;
-                else
-                  d.*member = v.real;
-              }};
+  constexpr bool text =
+      std::is_same_v<Value, std::string> || std::is_same_v<Value, std::optional<std::string>>;
+  static_assert(text || std::is_same_v<Value, double> || std::is_same_v<Value, bool> ||
+                std::is_same_v<Value, int>);
+  if constexpr (text) {
+    info.kind = ValueKind::custom;
+    return {.info = info,
+            .parse =
+                [member](Tcl_Interp*, Tcl_Obj* v, Draft& d) {
+                  d.*member = Tcl_GetString(v);
+                  return true;
+                },
+            .show =
+                [member](const Draft& d) {
+                  if constexpr (std::is_same_v<Value, std::string>)
+                    return Tcl_NewStringObj((d.*member).c_str(), -1);
+                  else
+                    return d.*member ? Tcl_NewStringObj((d.*member)->c_str(), -1) : Tcl_NewObj();
+                }};
+  } else {
+    if constexpr (std::is_same_v<Value, bool>) info.kind = ValueKind::boolean;
+    if constexpr (std::is_same_v<Value, int>) info.kind = ValueKind::integer;
+    return {.info = info,
+            .get =
+                [member](const Draft& d) {
+                  if constexpr (std::is_same_v<Value, bool>)
+                    return booleanValue(d.*member);
+                  else if constexpr (std::is_same_v<Value, int>)
+                    return integerValue(d.*member);
+                  else
+                    return realValue(d.*member);
+                },
+            .set =
+                [member](Draft& d, const OptionValue& v) {
+                  if constexpr (std::is_same_v<Value, bool>)
+                    d.*member = v.boolean;
+                  else if constexpr (std::is_same_v<Value, int>)
+                    d.*member = v.integer;
+                  else
+                    d.*member = v.real;
+                }};
+  }
+}
+
+// A row that converts its value itself and shows none ({} or, in help, the
+// info's defaultText): a list of ids, a -series, columns.
+template <class Draft>
+Option<Draft> parsedRow(OptionInfo info, std::function<bool(Tcl_Interp*, Tcl_Obj*, Draft&)> parse) {
+  info.kind = ValueKind::custom;
+  return {
+      .info = info, .parse = std::move(parse), .show = [](const Draft&) { return Tcl_NewObj(); }};
+}
+
+// -every K, a whole number >= 1: how often a run records or calls back.
+template <class Draft>
+Option<Draft> everyRow(const char* help, int Draft::*member, const char* defaultText = nullptr) {
+  return memberRow(OptionInfo{.name = "-every",
+                              .synopsis = "K",
+                              .help = help,
+                              .kind = ValueKind::integer,
+                              .range = {.min = 1},
+                              .defaultText = defaultText},
+                   member);
 }
 
 // The rows of one noun. Keep it static: Tcl caches the name table by address.
@@ -145,9 +194,15 @@ class OptionTable {
   // rather than by a count of rows kept in step by hand. A name no row has
   // is a bug in sandflow.
   int index(std::string_view name) const {
+    const int k = find(name);
+    SF_ASSERT(k >= 0 && "an option table has no row of that name");
+    return k;
+  }
+  // The row of option `name`, or -1 where the table has none (a word of
+  // another table, as output movie's view options).
+  int find(std::string_view name) const {
     for (int k = 0; k < size(); ++k)
       if (name == info(k).name) return k;
-    SF_ASSERT(!"an option table has no row of that name");
     return -1;
   }
   const OptionInfo& info(int k) const { return rows_[std::size_t(k)].info; }
@@ -221,6 +276,19 @@ class OptionTable {
       withDefaults.push_back({info(k).name, info(k).synopsis, texts[std::size_t(k)].c_str()});
     withDefaults.push_back({nullptr, nullptr, nullptr});
     return helpText(noun, verbs, withDefaults.data());
+  }
+  // `NOUN help` (help's lines) and `NOUN options` (describe) for makeEnsemble;
+  // withOptionsVerb false: the noun answers `options` itself, or not at all.
+  NounAnswers answers(const char* noun, std::initializer_list<const char*> verbs,
+                      const Draft& defaults, bool withOptionsVerb = true) const {
+    NounAnswers a{.help = help(noun, verbs, defaults)};
+    if (withOptionsVerb) {
+      Tcl_Obj* list = describe(defaults);
+      Tcl_IncrRefCount(list);
+      a.options = Tcl_GetString(list);
+      Tcl_DecrRefCount(list);
+    }
+    return a;
   }
 
  private:
