@@ -75,9 +75,9 @@ bool Coupler::needed(const lb::Lattice& lattice, const dem::Assembly& assembly) 
 }
 
 bool Coupler::stale(const Cached& c, int id, const Vec2& x, double angle, double area, double reach,
-                    double radius, bool outside) const {
-  return c.id != id || c.x != x || c.angle != angle || c.area != area || c.reach != reach ||
-         c.radius != radius || c.outside != outside;
+                    double radius, bool outside, bool turns) const {
+  return c.id != id || c.x != x || (turns && c.angle != angle) || c.area != area ||
+         c.reach != reach || c.radius != radius || c.outside != outside;
 }
 
 void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const Settings& settings,
@@ -92,7 +92,8 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
       lattice.topologyVersion() != topology_ || settings.subcells != measuredWith_.subcells;
   topology_ = lattice.topologyVersion();
   measuredWith_ = settings;
-  if (remeasure) elements_.clear(), circles_.clear();
+  if (remeasure || rebuildEveryStep_) elements_.clear(), circles_.clear(), listKept_ = false;
+  const std::size_t ownersBefore = elements_.size() + circles_.size();
   if (remeasure || open_.size() != std::size_t(grid.nx) * grid.ny) {
     open_.assign(std::size_t(grid.nx) * grid.ny, 0);
     openChunks_.assign(std::size_t(grid.openChunksPerRow()) * grid.ny, 1);
@@ -116,6 +117,7 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
     cover(f, reference, grid, settings.subcells, c.cells);
     c.overlap = selfOverlap(f, grid);
     c.runs.clear();
+    // (c.before holds the runs of the pose before, compared below.)
     // Consecutive nodes are the next cell of the same row (a row's last cell
     // and the next row's first have the padding between them).
     const std::size_t count = c.cells.size();
@@ -128,28 +130,45 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
           {std::uint32_t(lattice.nodeIndex(i, j)), std::int32_t(m), std::int32_t(end - m)});
     }
   };
+  // A solid measured again keeps the list as it was when its runs (nodes,
+  // cells) are those of its pose before: a small move changes only ratios.
+  auto remeasured = [](Cached& c) { c.before.swap(c.runs), c.runs.clear(), c.measuredNow = true; };
+  auto settle = [](Cached& c) {
+    c.runsChanged =
+        !std::equal(c.runs.begin(), c.runs.end(), c.before.begin(), c.before.end(),
+                    [](const Run& x, const Run& y) {
+                      return x.node == y.node && x.first == y.first && x.length == y.length;
+                    });
+  };
 #pragma omp parallel for schedule(dynamic, 4) num_threads(threads) if (n >= parallel::kCoverSolids)
   for (int s = 0; s < n; ++s) {
     Cached& c = elements_[s];
+    c.runsChanged = false, c.measuredNow = false;
     if (!covers(b, s)) {
-      c = Cached{};
+      if (c.id >= 0 || !c.runs.empty()) c = Cached{};  // (runsChanged)
       continue;
     }
     const dem::Shape& shape = *b.shape[s];
-    if (!stale(c, b.id[s], b.x[s], b.angle[s], shape.area(), b.reach[s], 0, false)) continue;
+    // A disc's cells do not depend on its angle: one that only turns keeps them.
+    const bool turns = shape.type() != dem::ShapeType::disc;
+    if (!stale(c, b.id[s], b.x[s], b.angle[s], shape.area(), b.reach[s], 0, false, turns)) continue;
     // The new pose; the cells and runs vectors keep their capacity.
     c.id = b.id[s], c.x = b.x[s], c.angle = b.angle[s], c.area = shape.area();
     c.reach = b.reach[s], c.radius = 0, c.outside = false;
-    c.cells.clear(), c.runs.clear(), c.overlap = 0;
-    if (beyondWalls(grid, b.x[s], b.reach[s])) continue;  // no cells: spares the footprint
-    if (const auto f = footprintOf(shape, b.x[s], b.angle[s])) measure(c, *f, b.x[s]);
+    c.cells.clear(), remeasured(c), c.overlap = 0;
+    if (!beyondWalls(grid, b.x[s], b.reach[s]))  // else no cells: spares the footprint
+      if (const auto f = footprintOf(shape, b.x[s], b.angle[s])) measure(c, *f, b.x[s]);
+    settle(c);
   }
   for (std::size_t k = 0; k < circles.size(); ++k) {
     const lb::CircleObstacle& o = circles[k];
     Cached& c = circles_[k];
-    if (!stale(c, o.id, o.centre, 0, 0, 0, o.radius, o.outside)) continue;
-    c = Cached{o.id, o.centre, 0, 0, 0, o.radius, o.outside, {}, {}, 0};
+    c.runsChanged = false, c.measuredNow = false;
+    if (!stale(c, o.id, o.centre, 0, 0, 0, o.radius, o.outside, false)) continue;
+    c.id = o.id, c.x = o.centre, c.angle = 0, c.area = 0, c.reach = 0, c.radius = o.radius;
+    c.outside = o.outside, c.cells.clear(), remeasured(c), c.overlap = 0;
     measure(c, *circleFootprint(o.centre, o.radius, o.outside), o.centre);
+    settle(c);
   }
 
   overlap_ = SelfOverlap{};
@@ -166,19 +185,30 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   Profile& profile = profile_.get();
   const auto t1 = profile.lap(Stage::coverageMeasure, t0);
   // 2. The pieces (each solid's cells, solid by solid: the order the force
-  //    sums keep) in node order, and each node's pieces made a cell.
+  //    sums keep) in node order, and each node's pieces made a cell. Kept
+  //    from the last step when every solid's runs are as they were.
   const int owners = n + int(circles.size());
-  pieceStart_.assign(owners + 1, 0);
-  runs_.clear(), runOwner_.clear();
-  runStart_.assign(owners + 1, 0);
+  bool keep = listKept_ && std::size_t(owners) == ownersBefore;
+  counts_ = CellCounts{};
   for (int o = 0; o < owners; ++o) {
     const Cached& c = coverOf(o);
-    pieceStart_[o + 1] = pieceStart_[o] + c.cells.size();
-    runStart_[o + 1] = runStart_[o] + std::int32_t(c.runs.size());
-    runs_.insert(runs_.end(), c.runs.begin(), c.runs.end());
-    runOwner_.insert(runOwner_.end(), c.runs.size(), o);
+    keep = keep && !c.runsChanged;
+    if (c.measuredNow) counts_.remeasured += c.cells.size();
   }
-  groupRuns();
+  if (!keep) {
+    pieceStart_.assign(owners + 1, 0);
+    runs_.clear(), runOwner_.clear();
+    runStart_.assign(owners + 1, 0);
+    for (int o = 0; o < owners; ++o) {
+      const Cached& c = coverOf(o);
+      pieceStart_[o + 1] = pieceStart_[o] + c.cells.size();
+      runStart_[o + 1] = runStart_[o] + std::int32_t(c.runs.size());
+      runs_.insert(runs_.end(), c.runs.begin(), c.runs.end());
+      runOwner_.insert(runOwner_.end(), c.runs.size(), o);
+    }
+    groupRuns();
+  }
+  listKept_ = !rebuildEveryStep_;
   const auto t2 = profile.lap(Stage::coverageSort, t1);
   // Rigid velocities (vx, vy, w) of the owners: elements as they are, or
   // solved with the exchange they will cause; circles as prescribed.
@@ -219,6 +249,8 @@ void Coupler::prepare(lb::Lattice& lattice, const dem::Assembly& assembly, const
   }
   fastest_.mach = std::sqrt(fastest2);
   cells_ = total;
+  for (const CellCounts& k : taskCounts_)
+    counts_.partial += k.partial, counts_.interior += k.interior;
   // Ours now holds the old list; the new one ascends by node (groupRuns).
   lattice.swapCoveredCells(cells, settings.equilibriumInterior, true);
   profile.lap(Stage::coverageCells, t2);
@@ -374,9 +406,11 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
   const std::ptrdiff_t tasks =
       std::max<std::ptrdiff_t>(1, std::ptrdiff_t(total) / (parallel::kCellChunk / 4));
   chunkFastest_.assign(tasks, Fastest{});
+  taskCounts_.assign(tasks, CellCounts{});
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads_.get()) if (tasks > 1)
   for (std::ptrdiff_t t = 0; t < tasks; ++t) {
     Fastest best;
+    std::size_t partialCells = 0, interiorCells = 0;
     const std::ptrdiff_t qEnd = groups * (t + 1) / tasks;
     for (std::ptrdiff_t q = groups * t / tasks; q < qEnd; ++q) {
       constexpr std::ptrdiff_t kAhead = 8;  // groups: about two hundred cells
@@ -412,6 +446,7 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
           const bool interior = p.interior;
           to.node = std::int32_t(run.node + k), to.interior = interior;
           to.eps = std::min(1.0, p.eps);
+          partialCells += to.eps < 1, interiorCells += interior;
           if (blendNow) {
             const Vec2 v = motion.v + spin(motion.w, p.arm);
             // cellVelocity's sum for one piece: its weight eps / eps is 1 exactly.
@@ -440,6 +475,7 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
         cellStart_[cell] = entry;
         epsSum_[cell] = sum;
         cells[cell] = {std::int32_t(node), interior, std::min(1.0, sum), 0.0, 0.0};
+        partialCells += sum < 1, interiorCells += interior;
         if (blendNow) {
           const Vec2 u = cellVelocity(entry, entry + (end - k), sum, circles, toLattice);
           cells[cell].ux = u.x(), cells[cell].uy = u.y();
@@ -450,6 +486,7 @@ void Coupler::fillCells(const std::vector<lb::CircleObstacle>& circles, double t
       }
     }
     chunkFastest_[t] = best;
+    taskCounts_[t] = {partialCells, interiorCells, 0};
   }
 }
 
@@ -535,6 +572,8 @@ void Coupler::clear(dem::Assembly& assembly) {
   cellStart_.clear();
   epsSum_.clear();
   cells_ = 0;
+  counts_ = CellCounts{};
+  listKept_ = false;
   fastest_ = SolidSpeed{};
   assembly.clearFluidLoads();
 }

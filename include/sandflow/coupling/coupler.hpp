@@ -76,6 +76,18 @@ class Coupler {
   // of the two over its free degrees of freedom. 0 when held or uncovered.
   double explicitFeedback(const lb::Lattice& lattice, const dem::Bodies& b, int s) const;
   std::size_t coveredCells() const { return cells_; }
+  // The last `prepare`'s covered cells by kind, and the cells of the solids it
+  // measured again (those that moved, turned or changed; a disc that only
+  // turned keeps its cells).
+  struct CellCounts {
+    std::size_t partial = 0;     // eps < 1
+    std::size_t interior = 0;    // eps = 1 with eight such neighbours
+    std::size_t remeasured = 0;  // of the solids measured again
+  };
+  const CellCounts& cellCounts() const { return counts_; }
+  // The slow reference (tests): every solid measured and the cell list
+  // rebuilt each step, nothing kept from the step before.
+  void setRebuildEveryStep(bool on) { rebuildEveryStep_ = on; }
   // The profile prepare and collect record into (Stage::coverage*,
   // Stage::fluidForces): the owner's, once attached, else its own.
   void attachProfile(Profile* profile) { profile_.attach(profile); }
@@ -94,8 +106,10 @@ class Coupler {
     double angle = 0, area = 0, reach = 0, radius = 0;
     bool outside = false;
     CellCovers cells;
-    std::vector<Run> runs;
-    int overlap = 0;  // selfOverlap of its footprint
+    std::vector<Run> runs, before;  // its runs, and those of the pose before
+    int overlap = 0;                // selfOverlap of its footprint
+    bool runsChanged = true;        // in the last prepare: the list must be rebuilt
+    bool measuredNow = false;       // in the last prepare: measured again
   };
   // A piece is one solid's share of one cell: its global index g numbers the
   // solids' cells solid by solid (elements, then circles), pieceStart_[o] + m
@@ -134,8 +148,9 @@ class Coupler {
                  std::vector<lb::CoveredCell>& cells);
   // How many solids cover covered cell c (its pieces).
   int sharing(std::int32_t c) const { return cellStart_[c + 1] - cellStart_[c]; }
+  // `turns`: whether the coverage depends on the angle (not for a disc).
   bool stale(const Cached& c, int id, const Vec2& x, double angle, double area, double reach,
-             double radius, bool outside) const;
+             double radius, bool outside, bool turns) const;
 
   std::vector<Cached> elements_, circles_;
   std::vector<std::uint8_t> open_;        // per cell: bulk fluid (Grid::open), per topology
@@ -178,13 +193,17 @@ class Coupler {
     double u2 = 0;            // |u|^2 of its first fastest cell
     std::int32_t owner = -1;  // and that cell's (first) owner
   };
-  std::vector<Fastest> chunkFastest_;  // per task
+  std::vector<Fastest> chunkFastest_;   // per task
+  std::vector<CellCounts> taskCounts_;  // per task of fillCells: partial, interior
   // Kept from step to step (a fresh buffer would fault in its pages).
   std::vector<lb::CoveredCell> cellsBuffer_;
   ThreadCount threads_;
   std::uint64_t topology_ = 0;
   Settings measuredWith_;
   std::size_t cells_ = 0;
+  CellCounts counts_;
+  bool rebuildEveryStep_ = false;
+  bool listKept_ = false;  // the runs of the last prepare are still valid
   SolidSpeed fastest_;
   SelfOverlap overlap_;
   ProfileLink profile_;

@@ -61,6 +61,7 @@ class Manager {
   const coupling::Settings& couplingSettings() const { return coupling_; }
   void setCouplingSettings(const coupling::Settings& settings);
   const coupling::Coupler& coupler() const { return coupler_; }
+  coupling::Coupler& coupler() { return coupler_; }  // (tests: its slow reference)
   // Whether the last step had solids on the lattice (elements, circles) covering cells.
   bool solidsCoverCells() const { return coversCells_; }
   // Element steps per fluid step, each dt / n, under the fluid force of the step.
