@@ -1,7 +1,8 @@
 // Footprints of discs, convex polygons and superquadrics. Polygons answer with
 // their edge lines (exact inside, a lower bound outside) and clip the cell for
 // the exact area; superquadrics test the implicit function per point and use
-// their sampled outline (the same polygon their contacts use) for the area.
+// their sampled outline (the same polygon their contacts use) for the area
+// and their row bands.
 #include "sandflow/coupling/footprint.hpp"
 
 #include <algorithm>
@@ -136,8 +137,42 @@ class SuperquadricFootprint final : public PolygonFootprint {
     const Vec2 d = x - x_;
     return shape_.implicit(Vec2(cos_ * d.x() - sin_ * d.y(), sin_ * d.x() + cos_ * d.y())) <= 0;
   }
-  // The curve is not its outline: cell by cell, with the slack.
-  bool band(double, double, Band&) const override { return false; }
+  // Row by row from the outline polygon: the convex curve (exponents >= 1)
+  // holds the inscribed polygon, so the polygon's full interval is held by
+  // the curve too; and every point of the curve lies within the slack of the
+  // polygon, so the polygon's touched interval in the band grown by the slack
+  // on every side holds all the curve touches. Only the cells near the
+  // outline are measured, as for polygons.
+  // One pass over the edges for both: the grown band's vertices and its two
+  // lines' crossings (touched), the row's two lines' crossings (full).
+  bool band(double y0, double y1, Band& out) const override {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const double lines[4] = {y0 - slack, y1 + slack, y0, y1};
+    double lo[4] = {inf, inf, inf, inf}, hi[4] = {-inf, -inf, -inf, -inf};
+    double vlo = inf, vhi = -inf;
+    const std::size_t count = v_.size();
+    for (std::size_t k = 0; k < count; ++k) {
+      const Vec2 &p = v_[k], &q = v_[k + 1 == count ? 0 : k + 1];
+      if (p.y() >= lines[0] && p.y() <= lines[1])
+        vlo = std::min(vlo, p.x()), vhi = std::max(vhi, p.x());
+      const double ylo = std::min(p.y(), q.y()), yhi = std::max(p.y(), q.y());
+      if (yhi < lines[0] || ylo > lines[1]) continue;  // meets none of the four lines
+      for (int l = 0; l < 4; ++l) {
+        const double y = lines[l];
+        if (y < ylo || y > yhi) continue;
+        // As PolygonFootprint::band has it: a level edge gives both ends.
+        const double x =
+            p.y() == q.y() ? p.x() : p.x() + (y - p.y()) * (q.x() - p.x()) / (q.y() - p.y());
+        const double x2 = p.y() == q.y() ? q.x() : x;
+        lo[l] = std::min({lo[l], x, x2}), hi[l] = std::max({hi[l], x, x2});
+      }
+    }
+    out.lo = std::min({vlo, lo[0], lo[1]}) - slack, out.hi = std::max({vhi, hi[0], hi[1]}) + slack;
+    out.fullLo = std::max(lo[2], lo[3]), out.fullHi = std::min(hi[2], hi[3]);
+    if (!(out.lo <= out.hi)) out.lo = 1, out.hi = 0;
+    if (!(out.fullLo <= out.fullHi)) out.fullLo = 1, out.fullHi = 0;
+    return true;
+  }
 
  private:
   const dem::Superquadric& shape_;

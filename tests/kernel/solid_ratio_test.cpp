@@ -350,6 +350,10 @@ TEST(SolidRatio, RowByRowPassEqualsTheCellByCellPass) {
       {{0, 0}, {0.1, -0.03}, {0.19, 0.04}, {0.17, 0.13}, {0.06, 0.16}, {-0.03, 0.08}}, centroid);
   const dem::Polygon square =
       dem::Polygon::fromVertices({{0, 0}, {0.08, 0}, {0.08, 0.08}, {0, 0.08}}, centroid);
+  // A lozenge, a rounded box and an ellipse, coarsely and finely sampled.
+  const dem::Superquadric lozenge(0.09, 0.05, 1, 1.3, 16), box(0.12, 0.07, 6, 4, 64),
+      ellipse(0.05, 0.14, 2, 2, 400);
+  const dem::Superquadric* quadrics[] = {&lozenge, &box, &ellipse};
   int cases = 0, interior = 0, partial = 0;
   for (int t = 0; t < 400; ++t) {
     const bool periodic = t % 2;
@@ -360,7 +364,9 @@ TEST(SolidRatio, RowByRowPassEqualsTheCellByCellPass) {
     const int shape = t % 4;
     const auto f = shape == 0   ? coupling::footprintOf(hexagon, at, 6.3 * u(rng))
                    : shape == 1 ? coupling::footprintOf(square, at, t % 8 == 1 ? 0.0 : 6.3 * u(rng))
-                                : coupling::circleFootprint(at, h * (0.3 + 12 * u(rng)), false);
+                   : shape == 2 || t % 8 == 3
+                       ? coupling::circleFootprint(at, h * (0.3 + 12 * u(rng)), false)
+                       : coupling::footprintOf(*quadrics[t / 8 % 3], at, 6.3 * u(rng));
     for (int n : {coupling::kExact, 1, 4}) {
       CellCovers rows, cells;
       coupling::cover(*f, at, g, n, rows);
@@ -391,6 +397,52 @@ TEST(SolidRatio, RowByRowPassEqualsTheCellByCellPass) {
   std::printf("%d cases, %d interior and %d partial cells compared\n", cases, interior, partial);
   EXPECT_GT(interior, 10000);
   EXPECT_GT(partial, 10000);
+}
+
+// A footprint that counts what the pass asks of it: the cells it measures
+// and the cells it culls by distance.
+class Counting final : public coupling::Footprint {
+ public:
+  explicit Counting(const coupling::Footprint& f) : f_(f) {
+    box = f.box, slack = f.slack, everywhere = f.everywhere;
+  }
+  double distance(const Vec2& x) const override { return ++distances, f_.distance(x); }
+  bool inside(const Vec2& x) const override { return f_.inside(x); }
+  double cellArea(const Vec2& lo, double h) const override {
+    return ++measured, f_.cellArea(lo, h);
+  }
+  bool band(double y0, double y1, Band& out) const override { return f_.band(y0, y1, out); }
+  mutable long distances = 0, measured = 0;
+
+ private:
+  const coupling::Footprint& f_;
+};
+
+// Every shape pays by its outline: a superquadric 80 cells across is covered
+// row by row, its cells near the outline measured, none culled one by one.
+TEST(SolidRatio, SuperquadricsAreMeasuredOnlyNearTheOutline) {
+  const Grid g = grid(200, 0.01);
+  const std::pair<double, double> exponents[] = {{1, 1}, {2, 2}, {2.5, 4}, {10, 10}};
+  for (const auto& [m, n] : exponents) {
+    const dem::Superquadric sq(0.4, 0.3, m, n, 200);
+    const auto f = coupling::footprintOf(sq, Vec2(1.003, 0.987), 0.4);
+    Counting counting(*f);
+    CellCovers cells;
+    coupling::cover(counting, Vec2(1.003, 0.987), g, coupling::kExact, cells);
+    long full = 0;
+    for (const CellCover& c : cells) full += c.eps >= 1;
+    const long boxCells = long((f->box.hi.x() - f->box.lo.x()) / g.h + 1) *
+                          long((f->box.hi.y() - f->box.lo.y()) / g.h + 1);
+    std::printf("m %g n %g: %zu cells (%ld full), %ld measured, %ld culled, box %ld\n", m, n,
+                cells.size(), full, counting.measured, counting.distances, boxCells);
+    EXPECT_EQ(counting.distances, 0);
+    EXPECT_GT(full, 2000);
+    // The outline is at most about 4 x 80 cells long: a few cells each side,
+    // and the slack's band (wide for a box-like shape sampled coarsely along
+    // its sides: half its longest outline edge each side).
+    EXPECT_LT(counting.measured, m < 5 ? 1500 : boxCells / 2);
+    EXPECT_NEAR(coveredArea(cells, g.h), sq.area(), 2e-3 * sq.area());
+  }
 }
 
 }  // namespace
