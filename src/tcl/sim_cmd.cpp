@@ -250,6 +250,9 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
   double fluidTorque = 0;
   const dem::Bodies& b = m.assembly().bodies();
   for (int s = 0; s < b.size(); ++s) fluidForce += b.fluidForce[s], fluidTorque += b.fluidTorque[s];
+  // The covered cells by kind and those measured again (docs/coupling.md).
+  const coupling::Coupler::CellCounts counts =
+      m.solidsCoverCells() ? m.coupler().cellCounts() : coupling::Coupler::CellCounts{};
   Tcl_SetObjResult(
       interp,
       newDict({{"time", newDouble(m.time())},
@@ -272,6 +275,9 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
                {"accuratestep", newDouble(m.assembly().timestepLimits().accurate)},
                {"covered", Tcl_NewWideIntObj(Tcl_WideInt(
                                m.solidsCoverCells() ? m.lattice().coveredCells().size() : 0))},
+               {"coveredpartial", Tcl_NewWideIntObj(Tcl_WideInt(counts.partial))},
+               {"coveredinterior", Tcl_NewWideIntObj(Tcl_WideInt(counts.interior))},
+               {"remeasured", Tcl_NewWideIntObj(Tcl_WideInt(counts.remeasured))},
                {"fluidforce", newVec2(fluidForce)},
                {"fluidtorque", newDouble(fluidTorque)},
                {"substeps", Tcl_NewIntObj(m.substeps())},
