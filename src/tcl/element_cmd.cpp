@@ -166,6 +166,8 @@ int ElementInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
   if (shape.type() == ShapeType::wall) {
     dictPut(d, "from", newVec2(*draft.from));
     dictPut(d, "to", newVec2(*draft.to));
+    dictPut(d, "length", newDouble(static_cast<const dem::Wall&>(shape).length()));
+    dictPut(d, "thickness", newDouble(*draft.thickness));
   }
   Tcl_SetObjResult(interp, d);
   return TCL_OK;

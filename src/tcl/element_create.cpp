@@ -80,16 +80,28 @@ int WallCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const obj
   }
   ElementDraft e;
   if (!parseCreate(interp, objc, objv, wallOptions(), s.manager.assembly(), e)) return TCL_ERROR;
-  if (!e.from || !e.to)
-    return fail(interp, "VALUE WALL", "wall create needs -from {x y} and -to {x y}");
-  const Vec2 seg = *e.to - *e.from;
-  if (!(seg.norm() > 0))
-    return fail(interp, "VALUE WALL", "wall has zero length: -from equals -to");
-  if (e.angle) return fail(interp, "VALUE ANGLE", "a wall's angle follows from -from and -to");
   ElementDef def;
-  def.shape = std::make_unique<dem::Wall>(seg.norm(), e.thickness.value_or(seg.norm() / 20));
-  def.x = 0.5 * (*e.from + *e.to);
-  def.angle = std::atan2(seg.y(), seg.x());
+  if (e.center || e.length) {  // the wall's own pose: centre, length and angle
+    if (e.from || e.to)
+      return fail(interp, "VALUE WALL",
+                  "wall create takes -from and -to, or -center and -length: not both");
+    if (!e.center || !e.length)
+      return fail(interp, "VALUE WALL", "wall create needs -center {x y} with -length L");
+    def.shape = std::make_unique<dem::Wall>(
+        *e.length, e.thickness.value_or(dem::Wall::defaultThickness(*e.length)));
+    def.x = *e.center;  // and -angle, as for any shape (applyCommon)
+  } else {
+    if (!e.from || !e.to)
+      return fail(interp, "VALUE WALL", "wall create needs -from {x y} and -to {x y}");
+    const Vec2 seg = *e.to - *e.from;
+    if (!(seg.norm() > 0))
+      return fail(interp, "VALUE WALL", "wall has zero length: -from equals -to");
+    if (e.angle) return fail(interp, "VALUE ANGLE", "a wall's angle follows from -from and -to");
+    def.shape = std::make_unique<dem::Wall>(
+        seg.norm(), e.thickness.value_or(dem::Wall::defaultThickness(seg.norm())));
+    def.x = 0.5 * (*e.from + *e.to);
+    def.angle = std::atan2(seg.y(), seg.x());
+  }
   def.hold = dem::holdX | dem::holdY | dem::holdRotation;  // walls stand still unless freed
   applyCommon(e, def);
   return guarded(interp, [&] {
@@ -200,8 +212,9 @@ int DiscHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
 }
 int WallHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   return helpFor(interp, objc, objv, "wall",
-                 "create -from {x y} -to {x y} ?-option value ...?   -> id", wallOptions(),
-                 ShapeType::wall);
+                 "create -from {x y} -to {x y} ?-option value ...?   -> id\n"
+                 "wall create -center {x y} -length L ?-angle a? ?-option value ...?   -> id",
+                 wallOptions(), ShapeType::wall);
 }
 int PolygonHelp(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   return helpFor(interp, objc, objv, "polygon",

@@ -82,6 +82,14 @@ const Row kThickness = realRow({.name = "-thickness",
                                 .range = {.min = 0, .minOpen = true},
                                 .defaultText = "1/20 of its length"},
                                &ElementDraft::thickness);
+const Row kLength = realRow({.name = "-length",
+                             .synopsis = "L",
+                             .help = "a wall's length, with -center and -angle instead of -from "
+                                     "and -to (its own pose, as element info reports it)",
+                             .unit = "length",
+                             .range = {.min = 0, .minOpen = true},
+                             .defaultText = ""},
+                            &ElementDraft::length);
 // A choice among the session's materials: converted and shown by name.
 const Row kMaterial{
     {.name = "-material",
@@ -225,8 +233,9 @@ const ElementTable& discOptions() {
   return t;
 }
 const ElementTable& wallOptions() {
-  static const ElementTable t{kFrom, kTo,    kThickness,    kMaterial, kAngle, kVelocity,
-                              kFix,  kForce, kAcceleration, kId,       kStress};
+  static const ElementTable t{kFrom,         kTo,    kCenter,   kLength, kThickness,
+                              kMaterial,     kAngle, kVelocity, kFix,    kForce,
+                              kAcceleration, kId,    kStress};
   return t;
 }
 const ElementTable& polygonOptions() {

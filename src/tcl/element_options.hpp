@@ -20,7 +20,7 @@ struct Session;
 struct ElementDraft {
   const dem::MaterialTable* materials = nullptr;  // where -material's names are
   std::optional<Vec2> center, from, to, acceleration, axes, exponents;
-  std::optional<double> radius, thickness, angle;
+  std::optional<double> radius, length, thickness, angle;
   std::optional<double> stress;  // NaN: no servo
   std::optional<int> material, id, sides;
   std::optional<Eigen::Vector3d> velocity, force;

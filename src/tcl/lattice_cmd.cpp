@@ -160,6 +160,22 @@ const LatticeDraft& defaults() {
   return d;
 }
 
+// The settings the lattice was given, of those the kernel can derive from
+// others (the spacing from the cells or back, one of viscosity, tau and
+// timestep from the other two): their options, the rest being derived.
+Tcl_Obj* givenSettings(const LatticeDef& def) {
+  Tcl_Obj* given = Tcl_NewListObj(0, nullptr);
+  auto add = [&](bool was, const char* option) {
+    if (was) Tcl_ListObjAppendElement(nullptr, given, Tcl_NewStringObj(option, -1));
+  };
+  add(def.cells > 0, "-cells");
+  add(def.spacing > 0, "-spacing");
+  add(def.viscosity.has_value(), "-viscosity");
+  add(def.tau.has_value(), "-tau");
+  add(def.timestep.has_value() && !(def.viscosity && def.tau), "-timestep");
+  return given;
+}
+
 int LatticeCreate(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
   Session& s = sessionOf(data);
   if (objc < 2 || objc % 2 == 0) {
@@ -271,7 +287,8 @@ int LatticeInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const ob
                  {"kinds", kinds},
                  {"threads", Tcl_NewIntObj(l.threads())},
                  {"memory", Tcl_NewWideIntObj(Tcl_WideInt(l.memoryBytes()))},
-                 {"bytespernode", newDouble(double(l.memoryBytes()) / double(l.nodes()))}}));
+                 {"bytespernode", newDouble(double(l.memoryBytes()) / double(l.nodes()))},
+                 {"given", givenSettings(p.def)}}));
     return TCL_OK;
   });
 }
@@ -496,7 +513,8 @@ void registerLatticeCommands(Tcl_Interp* interp, Session* session) {
       kOptions.answers("lattice",
                        {"create -size {Lx Ly} (-cells NX | -spacing h) ?-option value ...?",
                         "configure ?-option value ...?", "cget -option",
-                        "info                    -> dict nx ny nodes spacing timestep tau ...",
+                        "info                    -> dict nx ny nodes spacing timestep tau ... "
+                        "given",
                         "probe {x y}             -> dict density pressure velocity solid ...",
                         "obstacle rect {x0 y0 x1 y1} ?-slip 0|1? ?-id N?   -> id",
                         "obstacle circle {cx cy r} ?-outside 0|1? ?-velocity {vx vy w}? "

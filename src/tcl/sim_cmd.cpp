@@ -245,6 +245,9 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
     Tcl_ListObjAppendElement(nullptr, warnings, newString(withRemedy(w.text, w.remedy)));
   const bool stable =
       !lattice || (std::isfinite(mach) && mach <= m.machStopLimit() && tau > lb::kTauMin);
+  // Whether the timestep was given rather than derived (with a lattice,
+  // lattice info's "given" says, of its own settings).
+  const bool givenTimestep = m.timestepFixed() && !lattice;
   // What the fluid exerted on all elements together in the last step.
   Vec2 fluidForce = Vec2::Zero();
   double fluidTorque = 0;
@@ -281,6 +284,7 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
                {"fluidforce", newVec2(fluidForce)},
                {"fluidtorque", newDouble(fluidTorque)},
                {"substeps", Tcl_NewIntObj(m.substeps())},
+               {"given", Tcl_NewStringObj(givenTimestep ? "-timestep" : "", -1)},
                {"passes", passesDict(session)}}));
   return TCL_OK;
 }

@@ -12,9 +12,9 @@
 #
 # Numbers are written as Tcl prints a double with tcl_precision 0: the
 # shortest form that reads back as the same double, so what the commands
-# report comes back bit for bit. A few values the kernel keeps are not
-# reported (a polygon's outline in its own frame, a wall's length and
-# thickness, which pair of viscosity, tau and timestep was given): those are
+# report comes back bit for bit. Which of viscosity, tau and timestep (and
+# cells or spacing) were given, and a wall's own pose and thickness, the
+# kernel reports. A polygon's outline in its own frame it does not: that is
 # found by redoing the kernel's arithmetic here on candidate inputs and
 # keeping the one that gives back exactly what is reported; where none does,
 # the script says so in a comment. What no command can set (the clock, the
@@ -208,36 +208,22 @@ proc sim {} {
 }
 
 # How the timestep comes back: {sim OPTIONS lattice OPTIONS comment TEXT}.
-# Whether it was fixed ("sim configure -timestep") no command reports, so
-# it is read from the numbers. Without a lattice a timestep other than the
-# elements' automatic one (a tenth of their critical step, or 0) was fixed.
-# With one, lattice create derives the third of viscosity, tau and timestep
-# from two (src/lb/lattice_def.cpp): give the two that give back the third
-# exactly, the pair it was made from.
+# The kernel says which settings were given (sim info's and lattice info's
+# "given"); the derived ones follow from them as before.
 proc stepping {} {
     set dt [::sf::sim cget -timestep]
-    if {[catch {::sf::lattice configure} lattice]} {
-        set critical [dict get [::sf::sim info] critical]
-        set automatic [expr {$critical < Inf ? $critical / 10 : 0.0}]
-        set sim [expr {$dt == $automatic ? {} : [list -timestep $dt]}]
+    if {[catch {::sf::lattice info} info]} {
+        set given [dict get [::sf::sim info] given]
+        set sim [expr {"-timestep" in $given ? [list -timestep $dt] : {}}]
         return [list sim $sim lattice {} comment {}]
     }
-    set h [dict get $lattice -spacing]
-    set nu [dict get $lattice -viscosity]
-    set tau [dict get $lattice -tau]
-    set h2 [expr {$h * $h}]
-    if {(2 * $tau - 1) / 6 * $h2 / $nu == $dt} {
-        return [list sim {} lattice [list -viscosity $nu -tau $tau] comment {}]
+    set given [dict get $info given]
+    set lattice {}
+    foreach option {-viscosity -tau} {
+        if {$option in $given} {lappend lattice $option [::sf::lattice cget $option]}
     }
-    if {0.5 + 3 * $nu * $dt / $h2 == $tau} {
-        return [list sim [list -timestep $dt] lattice [list -viscosity $nu] comment {}]
-    }
-    if {(2 * $tau - 1) / 6 * $h2 / $dt == $nu} {
-        return [list sim [list -timestep $dt] lattice [list -tau $tau] comment {}]
-    }
-    list sim {} lattice [list -viscosity $nu -tau $tau] comment \
-        "# The timestep, $dt, may come back different in its last digit: no two\
-            of viscosity, tau and timestep give the third exactly."
+    set sim [expr {"-timestep" in $given ? [list -timestep $dt] : {}}]
+    list sim $sim lattice $lattice comment {}
 }
 
 # ---- the lattice -------------------------------------------------------------
@@ -246,14 +232,9 @@ proc lattice {} {
     if {[catch {::sf::lattice configure} options]} {return {}}
     set stepping [stepping]
     set create [list -origin [dict get $options -origin] -size [dict get $options -size]]
-    # -cells gives h = width / cells; a spacing that is not that was given.
-    set cells [dict get $options -cells]
-    set h [dict get $options -spacing]
-    if {[lindex [dict get $options -size] 0] / double($cells) == $h} {
-        lappend create -cells $cells
-    } else {
-        lappend create -spacing $h
-    }
+    # -cells or -spacing, whichever the lattice was given
+    set option [expr {"-cells" in [dict get [::sf::lattice info] given] ? "-cells" : "-spacing"}]
+    lappend create $option [dict get $options $option]
     lappend create {*}[dict get $stepping lattice] \
         {*}[without $options {-origin -size -cells -spacing -viscosity -tau}]
     set lines [list "# The lattice and its obstacles."]
@@ -507,77 +488,23 @@ proc polygon {info common density} {
     return $lines
 }
 
-# ---- walls: length and thickness are not reported ------------------------------
+# ---- walls ---------------------------------------------------------------------
 
-# Whether "wall create -from F -to T ?-thickness t?", put at the element's
-# pose, gives back its ends, area and inertia (src/dem/shape.cpp).
-proc sameWall {length thickness info density} {
-    lassign [dict get $info position] x y
-    set angle [dict get $info angle]
-    set half [expr {0.5 * $length}]
-    set hx [expr {$half * cos($angle)}]
-    set hy [expr {$half * sin($angle)}]
-    set area [expr {$length * $thickness}]
-    set mass [expr {$density * $area}]
-    expr {[same [list [expr {$x - $hx}] [expr {$y - $hy}]] [dict get $info from]]
-          && [same [list [expr {$x + $hx}] [expr {$y + $hy}]] [dict get $info to]]
-          && [same $area [dict get $info area]]
-          && [same [expr {$mass * ($length * $length / 12.0)}] [dict get $info inertia]]}
-}
-
-# {from to thickness exact}; thickness {} for the default (length / 20).
-proc wallEnds {info density} {
-    set area [dict get $info area]
-    set reported [list [dict get $info from] [dict get $info to]]
-    foreach ends [list [lmap p $reported {typedList $p}] $reported] {
-        lassign $ends from to
-        lassign $from fx fy
-        lassign $to tx ty
-        set length [expr {sqrt(($tx - $fx) * ($tx - $fx) + ($ty - $fy) * ($ty - $fy))}]
-        if {!($length > 0)} continue  ;# rounding collapsed a tiny wall
-        foreach thickness [list [expr {$length / 20}] [typed [expr {$area / $length}]] \
-                               [expr {$area / $length}]] {
-            if {[sameWall $length $thickness $info $density]} {
-                if {$thickness == $length / 20} {set thickness {}}
-                return [list $from $to $thickness 1]
-            }
-        }
-    }
-    lassign $reported from to
-    set length [expr {sqrt(([lindex $to 0] - [lindex $from 0]) ** 2
-                           + ([lindex $to 1] - [lindex $from 1]) ** 2)}]
-    list $from $to [expr {$area / $length}] 0
-}
-
+# A wall's own pose (centre, length, angle) and thickness, as element info
+# reports them: "wall create -center -length" makes it again exactly.
 proc wall {info common density} {
     set id [dict get $info id]
-    lassign [wallEnds $info $density] from to thickness exact
-    set extra {}
-    if {$thickness ne ""} {lappend extra -thickness $thickness}
+    set extra [list -length [dict get $info length] -thickness [dict get $info thickness]]
     set stress [::sf::element cget $id -stress]
     if {$stress ne ""} {lappend extra -stress $stress}
-    # Walls are held unless freed, so -fix is always written; -angle follows from the ends.
+    # Walls are held unless freed, so -fix is always written.
     set fix [dict get $info fix]
     set common [without $common {-angle -fix}]
-    set lines {}
-    if {!$exact} {
-        lappend lines "# wall $id: its length and thickness are rebuilt from its ends and\
-            area and may differ in the last digit (no command reports them)."
-    }
-    lappend lines [list wall create -from $from -to $to {*}$extra {*}$common -fix $fix]
-    # The pose "wall create" gives (src/tcl/element_cmd.cpp), and the holds a
-    # plate's -stress sets.
-    set configure {}
-    lassign $from fx fy
-    lassign $to tx ty
-    set centre [list [expr {0.5 * ($fx + $tx)}] [expr {0.5 * ($fy + $ty)}]]
-    set angle [expr {atan2($ty - $fy, $tx - $fx)}]
-    if {![same $centre [dict get $info position]] || ![same $angle [dict get $info angle]]} {
-        lappend configure -center [dict get $info position] -angle [dict get $info angle]
-    }
-    if {$stress ne "" && $fix ne {x y rot}} {lappend configure -fix $fix}
-    if {[llength $configure]} {
-        lappend lines [list element configure $id {*}$configure]
+    set lines [list [list wall create -center [dict get $info position] {*}$extra \
+        -angle [dict get $info angle] {*}$common -fix $fix]]
+    # the holds a plate's -stress sets
+    if {$stress ne "" && $fix ne {x y rot}} {
+        lappend lines [list element configure $id -fix $fix]
     }
     return $lines
 }

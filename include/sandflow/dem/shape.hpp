@@ -54,6 +54,8 @@ class Disc final : public Shape {
 class Wall final : public Shape {
  public:
   Wall(double length, double thickness) : length_(length), thickness_(thickness) {}
+  // A wall made without a thickness: 1/20 of its length.
+  static double defaultThickness(double length) { return length / 20; }
   double length() const { return length_; }
   double thickness() const { return thickness_; }
   // World end points for a pose.
