@@ -118,7 +118,13 @@ Tcl_Obj* evaluator() {
 }
 
 std::string sideExprText(int side, const lb::SideDef& d) {
-  return std::string(kSideNames[side]) + " side's -expr {" + d.expr[0] + " " + d.expr[1] + "}";
+  Tcl_Obj* texts[2] = {newString(d.expr[0]), newString(d.expr[1])};
+  Tcl_Obj* list = Tcl_NewListObj(2, texts);  // as -walls takes it
+  Tcl_IncrRefCount(list);
+  const std::string text =
+      std::string(kSideNames[side]) + " side's -expr {" + Tcl_GetString(list) + "}";
+  Tcl_DecrRefCount(list);
+  return text;
 }
 
 // The side's expressions at its nodes at time t (physical units). Throws
