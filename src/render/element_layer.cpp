@@ -25,8 +25,7 @@ std::vector<Vec2> worldOutline(const dem::Shape& shape, const Vec2& x, double an
   switch (shape.type()) {
     case dem::ShapeType::disc: {
       const double r = static_cast<const dem::Disc&>(shape).radius();
-      // About 3 pixels per side, 24 sides at least.
-      const int n = int(std::clamp(2 * std::numbers::pi * world.length(r) / 3, 24.0, 360.0));
+      const int n = world.circleSides(r);
       std::vector<Vec2> pts(std::size_t(n), Vec2::Zero());
       for (int k = 0; k < n; ++k) {
         const double t = angle + 2 * std::numbers::pi * k / n;

@@ -134,6 +134,18 @@ void rect(const Rect& r, const Rgba& c) {
   glEnd();
 }
 
+// The viewport's colour where the field's sprite leaves it showing: a fill
+// under the whole field would cost llvmpipe a pass over every pixel of it.
+void backdropAround(const Rect& v, const Sprite& s, const Rgba& c) {
+  const float x0 = std::clamp(std::min(s.x0, s.x1), v.x0, v.x1);
+  const float x1 = std::clamp(std::max(s.x0, s.x1), v.x0, v.x1);
+  const float y0 = std::clamp(std::min(s.y0, s.y1), v.y0, v.y1);
+  const float y1 = std::clamp(std::max(s.y0, s.y1), v.y0, v.y1);
+  for (const Rect& r : {Rect{v.x0, v.y0, v.x1, y0}, Rect{v.x0, y1, v.x1, v.y1},
+                        Rect{v.x0, y0, x0, y1}, Rect{x1, y0, v.x1, y1}})
+    if (r.x1 > r.x0 && r.y1 > r.y0) rect(r, c);
+}
+
 // A fan about the centre, closed.
 void fan(const Fill& f, Triangles& out) {
   const std::size_t n = f.outline.size();
@@ -170,11 +182,13 @@ void drawList(const DrawList& list) {
   const int sx0 = int(std::floor(v.x0)), sy0 = int(std::floor(v.y0));
   glEnable(GL_SCISSOR_TEST);
   glScissor(sx0, sy0, int(std::ceil(v.x1)) - sx0, int(std::ceil(v.y1)) - sy0);
-  rect(v, list.viewportColour);
   if (list.hasField) {  // opaque: every texel lies on the lattice
+    backdropAround(v, list.field, list.viewportColour);
     glDisable(GL_BLEND);
     sprite(list.field, true);
     glEnable(GL_BLEND);
+  } else {
+    rect(v, list.viewportColour);
   }
   strokes(list.fieldStrokes);
   fans(list.fills);

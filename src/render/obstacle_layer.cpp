@@ -50,7 +50,7 @@ void addObstacles(const lb::Lattice& lattice, bool filled, const WorldMap& world
              {0.5f * (a.x + b.x), 0.5f * (a.y + b.y)}, filled && cells, scale, list);
   }
   for (const lb::CircleObstacle& c : lattice.circles()) {
-    const int n = int(std::clamp(2 * std::numbers::pi * world.length(c.radius) / 3, 24.0, 360.0));
+    const int n = world.circleSides(c.radius);
     std::vector<Point> outline;
     for (int k = 0; k < n; ++k) {
       const double t = 2 * std::numbers::pi * k / n;

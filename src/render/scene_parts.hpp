@@ -1,6 +1,7 @@
 #pragma once
 // The pieces buildScene puts together (internal to the render module).
 #include <algorithm>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,6 +25,13 @@ struct WorldMap {
     return {float(px0 + (w.x() - wx0) * pixelsPerUnit), float(py0 + (w.y() - wy0) * pixelsPerUnit)};
   }
   float length(double worldLength) const { return float(worldLength * pixelsPerUnit); }
+  // Sides of a drawn circle: about 3 pixels each, which keeps the polygon
+  // within 0.3 pixel of the circle, down to 8 sides (a radius of 4 pixels). A frame draws hundreds
+  // of grains a few pixels across, and each side costs llvmpipe two triangles of its outline and
+  // one of its fill.
+  int circleSides(double radius) const {
+    return int(std::clamp(2 * std::numbers::pi * length(radius) / 3, 8.0, 360.0));
+  }
 };
 
 // A rectangle of the world.
