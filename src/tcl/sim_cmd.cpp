@@ -253,9 +253,15 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
   double fluidTorque = 0;
   const dem::Bodies& b = m.assembly().bodies();
   for (int s = 0; s < b.size(); ++s) fluidForce += b.fluidForce[s], fluidTorque += b.fluidTorque[s];
-  // The covered cells by kind and those measured again (docs/coupling.md).
+  // The covered cells by kind, read from the lattice's cells (which a
+  // checkpoint keeps), and those the last step measured again
+  // (docs/coupling.md).
   const coupling::Coupler::CellCounts counts =
       m.solidsCoverCells() ? m.coupler().cellCounts() : coupling::Coupler::CellCounts{};
+  coupling::Coupler::CellCounts cells;
+  if (m.solidsCoverCells())
+    for (const lb::CoveredCell& c : m.lattice().coveredCells())
+      cells.partial += c.eps < 1, cells.interior += c.interior;
   Tcl_SetObjResult(
       interp,
       newDict({{"time", newDouble(m.time())},
@@ -278,8 +284,8 @@ int SimInfo(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]
                {"accuratestep", newDouble(m.assembly().timestepLimits().accurate)},
                {"covered", Tcl_NewWideIntObj(Tcl_WideInt(
                                m.solidsCoverCells() ? m.lattice().coveredCells().size() : 0))},
-               {"coveredpartial", Tcl_NewWideIntObj(Tcl_WideInt(counts.partial))},
-               {"coveredinterior", Tcl_NewWideIntObj(Tcl_WideInt(counts.interior))},
+               {"coveredpartial", Tcl_NewWideIntObj(Tcl_WideInt(cells.partial))},
+               {"coveredinterior", Tcl_NewWideIntObj(Tcl_WideInt(cells.interior))},
                {"remeasured", Tcl_NewWideIntObj(Tcl_WideInt(counts.remeasured))},
                {"fluidforce", newVec2(fluidForce)},
                {"fluidtorque", newDouble(fluidTorque)},

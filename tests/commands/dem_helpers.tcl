@@ -19,7 +19,7 @@ proc demState {} {
     foreach id [::sf::source ids] {
         lappend state source $id [::sf::source info $id]
     }
-    lappend state sim [sim configure] simInfo [dict remove [sim info] mlups threads passes]
+    lappend state sim [sim configure] simInfo [simState]
     return $state
 }
 

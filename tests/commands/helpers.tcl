@@ -64,14 +64,19 @@ proc collectWarnings {} {
 # Everything a user can read back about the scene, to show that a refused
 # command changed nothing.
 proc sceneState {} {
-    set state [list sim [sim configure] \
-            simInfo [dict remove [sim info] mlups threads passes]]
+    set state [list sim [sim configure] simInfo [simState]]
     if {![catch {lattice configure} options]} {
         lappend state lattice $options \
                 latticeInfo [dict remove [lattice info] threads memory bytespernode] \
                 obstacles [lattice obstacles]
     }
     return $state
+}
+
+# sim info less the figures of the last step's work (speed, threads,
+# profile, cells measured again), which a load or reset clears.
+proc simState {} {
+    dict remove [sim info] mlups threads passes remeasured
 }
 
 # Reads a whole file (binary, so that the appended data does not trip an
