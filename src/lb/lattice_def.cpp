@@ -213,11 +213,12 @@ ResolvedLattice resolve(const LatticeDef& def) {
                                      "): must be below " + formatNumber(maxBoundaryMach));
     if (side.kind != SideKind::velocity &&
         (side.byExpression() || side.ramp != 0 || side.profile != SideProfile::uniform))
-      throw Error("VALUE WALLS", std::string(sideNames[s]) +
-                                     ": -profile, -expr and -ramp belong to velocity sides");
+      throw Error("VALUE WALLS",
+                  std::string(sideNames[s]) +
+                      ": a profile, an expression or a ramp belongs to a velocity side");
     if (!(side.ramp >= 0) || !std::isfinite(side.ramp))
       throw Error("VALUE WALLS", std::string(sideNames[s]) +
-                                     " side: -ramp must be a time >= 0, got " +
+                                     " side: the ramp must be a time >= 0, got " +
                                      formatNumber(side.ramp));
     if (side.byExpression()) checkSideValues(r, s, side.values);
     if (side.kind == SideKind::pressure && !(side.pressure > 0))
